@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ChargedParcel.H"
+#include "transform.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::ChargedParcel<ParcelType>::ChargedParcel(const ChargedParcel<ParcelType>& p)
+:
+    ParcelType(p),
+    q_(p.q_),
+    fE_(p.fE_)
+{}
+
+
+template<class ParcelType>
+Foam::ChargedParcel<ParcelType>::ChargedParcel
+(
+    const ChargedParcel<ParcelType>& p,
+    const polyMesh& mesh
+)
+:
+    ParcelType(p, mesh),
+    q_(p.q_),
+    fE_(p.fE_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class TrackCloudType>
+bool Foam::ChargedParcel<ParcelType>::move
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar trackTime
+)
+{
+    td.keepParticle = true;
+    td.switchProcessor = false;
+
+    switch (td.part())
+    {
+        case trackingData::tpVelocityHalfStep:
+        {
+            // Leapfrog half kick with the force at the current position
+            this->U() += (0.5*trackTime/this->mass())*fE_;
+            break;
+        }
+
+        case trackingData::tpLinearTrack:
+        {
+            ParcelType::move(cloud, td, trackTime);
+            break;
+        }
+
+        default:
+        {
+            FatalErrorInFunction
+                << td.part() << " is an invalid part of the tracking method."
+                << abort(FatalError);
+        }
+    }
+
+    return td.keepParticle;
+}
+
+
+template<class ParcelType>
+void Foam::ChargedParcel<ParcelType>::transformProperties(const tensor& T)
+{
+    ParcelType::transformProperties(T);
+    fE_ = transform(T, fE_);
+}
+
+
+template<class ParcelType>
+void Foam::ChargedParcel<ParcelType>::transformProperties
+(
+    const vector& separation
+)
+{
+    ParcelType::transformProperties(separation);
+}
+
+
+// * * * * * * * * * * * * * * IOStream operators  * * * * * * * * * * * * * //
+
+#include "ChargedParcelIO.C"
+
+// ************************************************************************* //

@@ -1,0 +1,72 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ElectrostaticsModel.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel(CloudType& owner)
+:
+    CloudSubModelBase<CloudType>(owner)
+{}
+
+
+template<class CloudType>
+Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    CloudSubModelBase<CloudType>(owner, dict, typeName, type)
+{}
+
+
+template<class CloudType>
+Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
+(
+    const ElectrostaticsModel<CloudType>& em
+)
+:
+    CloudSubModelBase<CloudType>(em)
+{}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::autoPtr<Foam::ElectrostaticsModel<CloudType>>
+Foam::ElectrostaticsModel<CloudType>::New
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+{
+    const word modelType
+    (
+        dict.template lookupOrDefault<word>("electrostaticsModel", "none")
+    );
+
+    Info<< "Selecting electrostatics model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "electrostaticsModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<ElectrostaticsModel<CloudType>>(cstrIter()(dict, owner));
+}
+
+
+// ************************************************************************* //

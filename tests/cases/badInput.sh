@@ -1,0 +1,57 @@
+# Bad input stops with an OpenFOAM FatalIOError naming the entry:
+# missing or out-of-range charge, diameter, density, rho0, epsilonR.
+. "$(dirname "$0")/common.sh.inc"
+
+copyCase twoChargedSpheres "$work/base"
+cd "$work/base" || exit 1
+run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
+
+# badCase <name> <python re.sub pattern> <replacement> <expected message regex>
+badCase()
+{
+    local name="$1" pattern="$2" repl="$3" expect="$4" dir="$work/$1"
+    rm -rf "$dir"
+    cp -r "$work/base" "$dir"
+    (
+        cd "$dir" || exit 1
+        $PY - "$pattern" "$repl" <<'PYEOF' || exit 1
+import re, sys
+p = "constant/cloudProperties"
+s = open(p).read()
+t, n = re.subn(sys.argv[1], sys.argv[2], s, count=1)
+if n != 1:
+    sys.exit("pattern not found: " + sys.argv[1])
+open(p, "w").write(t)
+PYEOF
+        chargedParticleFoam > log.solver 2>&1
+        rc=$?
+        if [ "$rc" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.solver \
+            && grep -Eq "$expect" log.solver
+        then
+            pass "badInput.$name (exit $rc: $(grep -Eo "$expect" log.solver | head -1))"
+        else
+            fail "badInput.$name (exit $rc; expected a FatalIOError matching '$expect', see $dir/log.solver)"
+        fi
+    )
+}
+
+badCase missingCharge   'rho 1000; q  1e-12; '  'rho 1000; ' \
+    'Entry q of parcel 0 .* is missing'
+badCase missingDiameter 'd 1e-4; rho 1000; q  1e-12' 'rho 1000; q  1e-12' \
+    'Entry d of parcel 0 .* is missing'
+badCase zeroDiameter    'd 1e-4; rho 1000; q -1e-12' 'd 0; rho 1000; q -1e-12' \
+    'Entry d of parcel 1 .* out of range \(0\).*> 0'
+badCase negativeDiameter 'd 1e-4; rho 1000; q  1e-12' 'd -1e-4; rho 1000; q  1e-12' \
+    'Entry d of parcel 0 .* out of range \(-0.0001\).*> 0'
+badCase zeroDensity     'rho 1000; q  1e-12' 'rho 0; q  1e-12' \
+    'Entry rho of parcel 0 .* out of range \(0\).*> 0'
+badCase negativeDensity 'rho 1000; q -1e-12' 'rho -5; q -1e-12' \
+    'Entry rho of parcel 1 .* out of range \(-5\).*> 0'
+badCase missingRho0     'rho0 +1000;' '' \
+    "Entry 'rho0' not found|Entry rho0 .* is missing"
+badCase zeroRho0        'rho0 +1000;' 'rho0 0;' \
+    'Entry rho0 .* is out of range'
+badCase zeroPermittivity 'epsilonR +1;' 'epsilonR 0;' \
+    'Entry epsilonR .* = 0 is out of range'
+badCase unknownModel    'electrostaticsModel directCoulomb;' 'electrostaticsModel coulombic;' \
+    'Unknown electrostaticsModel type coulombic'

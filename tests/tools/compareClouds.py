@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Compare two lagrangian clouds written by OpenFOAM (ASCII), particle by
+particle: e.g. a serial run and the reconstructed parallel run of one case.
+
+    compareClouds.py <timeDirA> <timeDirB> [--cloud cloud] [--tol 1e-10]
+
+Particles are matched by position (nearest neighbour, which must be a
+one-to-one map); the counts must agree. Checks, printed as PASS:/FAIL:
+lines: particle count, max |xA - xB| / max|xA| (positions, Cartesian
+'positions' file), max |UA - UB| / max|UA|, charges identical.
+"""
+import argparse
+import os
+import re
+import sys
+
+import numpy as np
+
+
+def read_field(path):
+    """Values of an ASCII IOField (scalar or vector) as an (N,) or (N,3) array;
+    handles the list forms 'N(...)', 'N{v}' and 'N\\n(\\n...\\n)'."""
+    text = open(path).read()
+    body = text.split("// * * *", 1)[-1]
+    body = re.sub(r"//.*", "", body)
+    m = re.search(r"(\d+)\s*([({])", body)
+    if not m:
+        raise ValueError(f"{path}: no list found")
+    n, opener = int(m.group(1)), m.group(2)
+    rest = body[m.end():]
+    if opener == "{":                       # uniform list N{value}
+        inner = rest[:rest.index("}")]
+        v = np.array(inner.replace("(", " ").replace(")", " ").split(), dtype=float)
+        return np.tile(v, (n, 1)) if v.size > 1 else np.full(n, v[0])
+    depth, end = 1, 0
+    for i, c in enumerate(rest):
+        depth += (c == "(") - (c == ")")
+        if depth == 0:
+            end = i
+            break
+    inner = rest[:end]
+    if "(" in inner:                        # vectors
+        rows = re.findall(r"\(([^()]*)\)", inner)
+        arr = np.array([r.split() for r in rows], dtype=float).reshape(-1, 3)
+    else:
+        arr = np.array(inner.split(), dtype=float)
+    if len(arr) != n:
+        raise ValueError(f"{path}: {len(arr)} values, header says {n}")
+    return arr
+
+
+def read_positions(path):
+    """Cartesian positions of a 'positions' file: lines '(x y z) celli'."""
+    text = open(path).read().split("// * * *", 1)[-1]
+    rows = re.findall(r"\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+([-+0-9.eE]+)\s*\)\s+-?\d+", text)
+    return np.array(rows, dtype=float).reshape(-1, 3)
+
+
+def load(time_dir, cloud):
+    d = os.path.join(time_dir, "lagrangian", cloud)
+    x = read_positions(os.path.join(d, "positions"))
+    U = read_field(os.path.join(d, "U")).reshape(-1, 3)
+    q = read_field(os.path.join(d, "q"))
+    return x, U, q
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("a")
+    ap.add_argument("b")
+    ap.add_argument("--cloud", default="cloud")
+    ap.add_argument("--tol", type=float, default=1e-10)
+    ap.add_argument("--name", default="clouds")
+    args = ap.parse_args()
+
+    xa, Ua, qa = load(args.a, args.cloud)
+    xb, Ub, qb = load(args.b, args.cloud)
+    ok = True
+
+    def check(name, good, detail):
+        nonlocal ok
+        ok &= bool(good)
+        print(f"{'PASS' if good else 'FAIL'}: {args.name}.{name} {detail}")
+
+    check("count", len(xa) == len(xb) and len(xa) > 0,
+          f"({len(xa)} vs {len(xb)} particles)")
+    if len(xa) != len(xb) or len(xa) == 0:
+        return 1
+
+    dist = np.linalg.norm(xa[:, None, :] - xb[None, :, :], axis=2)
+    match = dist.argmin(axis=1)
+    check("matching", len(set(match)) == len(match), "(one-to-one by position)")
+
+    scale_x = np.abs(xa).max()
+    ex = np.linalg.norm(xa - xb[match], axis=1).max()/scale_x
+    check("positions", ex <= args.tol, f"(max rel. difference {ex:.3e}, tol {args.tol:g})")
+
+    scale_U = np.linalg.norm(Ua, axis=1).max()
+    eU = np.linalg.norm(Ua - Ub[match], axis=1).max()/scale_U if scale_U > 0 else 0.0
+    check("velocities", eU <= args.tol, f"(max rel. difference {eU:.3e}, tol {args.tol:g})")
+
+    check("charges", np.array_equal(qa, qb[match]),
+          f"(total {qa.sum():.6e} vs {qb.sum():.6e} C)")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
