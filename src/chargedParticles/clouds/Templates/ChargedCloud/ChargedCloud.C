@@ -4,6 +4,8 @@
 
 #include "ChargedCloud.H"
 #include "ElectrostaticsModel.H"
+#include "CollisionModel.H"
+#include "subCycleTime.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -76,6 +78,12 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
         {
             parcelType::readFields(*this);
             this->deleteLostParticles();
+        }
+
+        // Electrostatics off: no stale force from a restart may act
+        if (!electrostatics().active())
+        {
+            electrostatics().calculate();
         }
     }
 }
@@ -166,15 +174,44 @@ void Foam::ChargedCloud<CloudType>::evolve()
         typename parcelType::trackingData td(*this);
 
         // Injected parcels start at their given state: the move that
-        // InjectionModel::inject gives them is made a (null) velocity kick,
-        // and the whole first step is taken by motion()
-        if (electrostatics().active())
-        {
-            td.part() = parcelType::trackingData::tpVelocityHalfStep;
-        }
+        // InjectionModel::inject gives them is made a (null) velocity kick
+        // (their forces are zero), and the whole first step is taken by
+        // motion()
+        td.part() = parcelType::trackingData::tpVelocityHalfStep;
 
         this->solve(*this, td);
     }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::ChargedCloud<CloudType>::moveCollideCharged
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td,
+    const scalar deltaT
+)
+{
+    if (forcesStale_)
+    {
+        electrostatics().calculate();
+    }
+
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    CloudType::move(cloud, td, deltaT);
+
+    td.part() = parcelType::trackingData::tpLinearTrack;
+    CloudType::move(cloud, td, deltaT);
+
+    this->updateCellOccupancy();
+
+    this->collision().collide();
+    electrostatics().calculate();
+    forcesStale_ = false;
+
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    CloudType::move(cloud, td, deltaT);
 }
 
 
@@ -188,30 +225,37 @@ void Foam::ChargedCloud<CloudType>::motion
 {
     if (!electrostatics().active())
     {
+        // Contact only (or nothing): the CollidingCloud leapfrog
         CloudType::motion(cloud, td);
-        return;
     }
-
-    const scalar dt = this->solution().trackTime();
-
-    if (forcesStale_)
+    else
     {
-        electrostatics().calculate();
+        // Contact and electrostatic forces in one leapfrog, sub-cycled at
+        // the collision time step
+        const label nSubCycles = this->collision().nSubCycles();
+
+        if (nSubCycles > 1)
+        {
+            Info<< "    " << nSubCycles << " move-collide subCycles" << endl;
+
+            subCycleTime moveCollideSubCycle
+            (
+                const_cast<Time&>(this->db().time()),
+                nSubCycles
+            );
+
+            while (!(++moveCollideSubCycle).end())
+            {
+                moveCollideCharged(cloud, td, this->db().time().deltaTValue());
+            }
+
+            moveCollideSubCycle.endSubCycle();
+        }
+        else
+        {
+            moveCollideCharged(cloud, td, this->db().time().deltaTValue());
+        }
     }
-
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, dt);
-
-    td.part() = parcelType::trackingData::tpLinearTrack;
-    CloudType::move(cloud, td, dt);
-
-    this->updateCellOccupancy();
-
-    electrostatics().calculate();
-    forcesStale_ = false;
-
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, dt);
 
     // Leave the tracking data ready for the next injection (see evolve)
     td.part() = parcelType::trackingData::tpVelocityHalfStep;

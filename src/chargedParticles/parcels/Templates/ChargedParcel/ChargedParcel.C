@@ -40,33 +40,14 @@ bool Foam::ChargedParcel<ParcelType>::move
     const scalar trackTime
 )
 {
-    td.keepParticle = true;
-    td.switchProcessor = false;
-
-    switch (td.part())
+    if (td.part() == trackingData::tpVelocityHalfStep)
     {
-        case trackingData::tpVelocityHalfStep:
-        {
-            // Leapfrog half kick with the force at the current position
-            this->U() += (0.5*trackTime/this->mass())*fE_;
-            break;
-        }
-
-        case trackingData::tpLinearTrack:
-        {
-            ParcelType::move(cloud, td, trackTime);
-            break;
-        }
-
-        default:
-        {
-            FatalErrorInFunction
-                << td.part() << " is an invalid part of the tracking method."
-                << abort(FatalError);
-        }
+        // Leapfrog half kick with the electrostatic force at the current
+        // position; the base layer adds the contact force and torque
+        this->U() += (0.5*trackTime/this->mass())*fE_;
     }
 
-    return td.keepParticle;
+    return ParcelType::move(cloud, td, trackTime);
 }
 
 

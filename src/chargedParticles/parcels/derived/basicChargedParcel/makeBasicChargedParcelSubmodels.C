@@ -14,6 +14,7 @@ Description
 #include "makeParcelForces.H"
 #include "makeParcelDispersionModels.H"
 #include "makeParcelInjectionModels.H"
+#include "makeParcelCollisionModels.H"
 #include "makeParcelPatchInteractionModels.H"
 #include "makeParcelStochasticCollisionModels.H"
 #include "makeParcelSurfaceFilmModels.H"
@@ -29,12 +30,13 @@ Description
 makeParcelCloudFunctionObjects(basicChargedCloud);
 makeCloudFunctionObjectType(ParticleHistory, basicChargedCloud);
 
-// Kinematic
+// Kinematic and colliding (OpenFOAM's sphere DEM: pairCollision)
 makeParcelForces(basicChargedCloud);
 makeParcelDispersionModels(basicChargedCloud);
 makeParcelInjectionModels(basicChargedCloud);
 makeInjectionModelType(ExplicitParcelInjection, basicChargedCloud);
 makeParcelPatchInteractionModels(basicChargedCloud);
+makeParcelCollisionModels(basicChargedCollidingCloud);
 makeParcelStochasticCollisionModels(basicChargedCloud);
 makeParcelSurfaceFilmModels(basicChargedCloud);
 
