@@ -4,8 +4,6 @@
 
 #include "ChargedCloud.H"
 #include "ElectrostaticsModel.H"
-#include "CollisionModel.H"
-#include "subCycleTime.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -185,80 +183,28 @@ void Foam::ChargedCloud<CloudType>::evolve()
 
 
 template<class CloudType>
-template<class TrackCloudType>
-void Foam::ChargedCloud<CloudType>::moveCollideCharged
-(
-    TrackCloudType& cloud,
-    typename parcelType::trackingData& td,
-    const scalar deltaT
-)
+void Foam::ChargedCloud<CloudType>::initialiseForces()
 {
-    if (forcesStale_)
+    CloudType::initialiseForces();
+
+    if (forcesStale_ && electrostatics().active())
     {
         electrostatics().calculate();
     }
-
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, deltaT);
-
-    td.part() = parcelType::trackingData::tpLinearTrack;
-    CloudType::move(cloud, td, deltaT);
-
-    this->updateCellOccupancy();
-
-    this->collision().collide();
-    electrostatics().calculate();
     forcesStale_ = false;
-
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, deltaT);
 }
 
 
 template<class CloudType>
-template<class TrackCloudType>
-void Foam::ChargedCloud<CloudType>::motion
-(
-    TrackCloudType& cloud,
-    typename parcelType::trackingData& td
-)
+void Foam::ChargedCloud<CloudType>::calculateForces()
 {
-    if (!electrostatics().active())
+    CloudType::calculateForces();
+
+    if (electrostatics().active())
     {
-        // Contact only (or nothing): the CollidingCloud leapfrog
-        CloudType::motion(cloud, td);
+        electrostatics().calculate();
     }
-    else
-    {
-        // Contact and electrostatic forces in one leapfrog, sub-cycled at
-        // the collision time step
-        const label nSubCycles = this->collision().nSubCycles();
-
-        if (nSubCycles > 1)
-        {
-            Info<< "    " << nSubCycles << " move-collide subCycles" << endl;
-
-            subCycleTime moveCollideSubCycle
-            (
-                const_cast<Time&>(this->db().time()),
-                nSubCycles
-            );
-
-            while (!(++moveCollideSubCycle).end())
-            {
-                moveCollideCharged(cloud, td, this->db().time().deltaTValue());
-            }
-
-            moveCollideSubCycle.endSubCycle();
-        }
-        else
-        {
-            moveCollideCharged(cloud, td, this->db().time().deltaTValue());
-        }
-    }
-
-    // Leave the tracking data ready for the next injection (see evolve)
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    forcesStale_ = false;
 }
 
 

@@ -9,6 +9,11 @@
 
 namespace Foam
 {
+    // The layers below ChargedParcel that OpenFOAM does not define
+    typedef EllipsoidParcel<CollidingParcel<KinematicParcel<particle>>>
+        basicEllipsoidParcel;
+    defineTemplateTypeNameAndDebug(basicEllipsoidParcel, 0);
+
     defineTemplateTypeNameAndDebug(basicChargedParcel, 0);
     defineTemplateTypeNameAndDebug(Cloud<basicChargedParcel>, 0);
 }

@@ -24,6 +24,7 @@ Description
 #include "ParticleHistory.H"
 #include "NoElectrostatics.H"
 #include "DirectCoulomb.H"
+#include "EllipsoidCollision.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -37,6 +38,7 @@ makeParcelInjectionModels(basicChargedCloud);
 makeInjectionModelType(ExplicitParcelInjection, basicChargedCloud);
 makeParcelPatchInteractionModels(basicChargedCloud);
 makeParcelCollisionModels(basicChargedCollidingCloud);
+makeCollisionModelType(EllipsoidCollision, basicChargedCollidingCloud);
 makeParcelStochasticCollisionModels(basicChargedCloud);
 makeParcelSurfaceFilmModels(basicChargedCloud);
 

@@ -4,6 +4,7 @@
 
 #include "ExplicitParcelInjection.H"
 #include "mathematicalConstants.H"
+#include "rigidBodyRotation.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -53,6 +54,48 @@ Foam::scalar Foam::ExplicitParcelInjection<CloudType>::readParcelScalar
 
 
 template<class CloudType>
+Foam::quaternion Foam::ExplicitParcelInjection<CloudType>::readOrientation
+(
+    const dictionary& pd,
+    const label i
+) const
+{
+    const bool euler = pd.found("eulerAngles");
+    const bool quat = pd.found("quaternion");
+    if (euler && quat)
+    {
+        FatalIOErrorInFunction(pd)
+            << "Parcel " << i << " in " << this->coeffDict().name().c_str()
+            << "/parcels gives both eulerAngles and quaternion: give one"
+            << exit(FatalIOError);
+    }
+    if (euler)
+    {
+        const vector angles(pd.get<vector>("eulerAngles"));
+        const scalar deg = constant::mathematical::pi/180;
+        return rigidBodyRotation::fromEulerAngles
+        (
+            deg*angles.x(), deg*angles.y(), deg*angles.z()
+        );
+    }
+    if (quat)
+    {
+        const FixedList<scalar, 4> c(pd.lookup("quaternion"));
+        const quaternion q(c[0], vector(c[1], c[2], c[3]));
+        if (!(mag(q) > 0) || !std::isfinite(mag(q)))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry quaternion of parcel " << i << " = " << c
+                << " is out of range: it must be finite and non-zero"
+                << exit(FatalIOError);
+        }
+        return q.normalized();
+    }
+    return quaternion::I;
+}
+
+
+template<class CloudType>
 void Foam::ExplicitParcelInjection<CloudType>::readParcels()
 {
     const PtrList<dictionary> parcels
@@ -66,6 +109,9 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
     d_.setSize(n);
     rho_.setSize(n);
     q_.setSize(n);
+    semiAxes_.setSize(n);
+    orientation_.setSize(n);
+    omegaBody_.setSize(n);
 
     const scalar rho0 =
         this->owner().constProps().dict().template get<scalar>("rho0");
@@ -81,7 +127,38 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
                 << exit(FatalIOError);
         }
         U_[i] = pd.lookupOrDefault<vector>("U", Zero);
-        d_[i] = readParcelScalar(pd, i, "d", true);
+
+        // Size: a sphere's diameter or an ellipsoid's semi-axes
+        semiAxes_[i] = Zero;
+        if (pd.readIfPresent("semiAxes", semiAxes_[i]))
+        {
+            if (pd.found("d"))
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Parcel " << i << " in "
+                    << this->coeffDict().name().c_str()
+                    << "/parcels gives both d and semiAxes: give one"
+                    << exit(FatalIOError);
+            }
+            const vector& s = semiAxes_[i];
+            if (!(cmptMin(s) > 0) || !std::isfinite(cmptMax(s)))
+            {
+                FatalIOErrorInFunction(pd)
+                    << "Entry semiAxes of parcel " << i << " in "
+                    << this->coeffDict().name().c_str()
+                    << "/parcels is out of range (" << s
+                    << "): all must be finite and > 0"
+                    << exit(FatalIOError);
+            }
+            d_[i] = 2*cbrt(s.x()*s.y()*s.z());
+        }
+        else
+        {
+            d_[i] = readParcelScalar(pd, i, "d", true);
+        }
+        orientation_[i] = readOrientation(pd, i);
+        omegaBody_[i] = pd.lookupOrDefault<vector>("omega", Zero);
+
         rho_[i] = readParcelScalar(pd, i, "rho", true, &rho0);
         q_[i] = readParcelScalar(pd, i, "q", false);
     }
@@ -120,6 +197,9 @@ Foam::ExplicitParcelInjection<CloudType>::ExplicitParcelInjection
     d_(im.d_),
     rho_(im.rho_),
     q_(im.q_),
+    semiAxes_(im.semiAxes_),
+    orientation_(im.orientation_),
+    omegaBody_(im.omegaBody_),
     injectorCells_(im.injectorCells_),
     injectorTetFaces_(im.injectorTetFaces_),
     injectorTetPts_(im.injectorTetPts_)
@@ -210,8 +290,23 @@ void Foam::ExplicitParcelInjection<CloudType>::setProperties
 {
     parcel.U() = U_[parcelI];
     parcel.d() = d_[parcelI];
+    if (semiAxes_[parcelI] != vector::zero)
+    {
+        parcel.setSemiAxes(semiAxes_[parcelI]);
+    }
+    else
+    {
+        parcel.setSemiAxes(vector::uniform(0.5*d_[parcelI]));
+    }
     parcel.rho() = rho_[parcelI];
     parcel.q() = q_[parcelI];
+    parcel.orientation() = orientation_[parcelI];
+    parcel.angularMomentum() = rigidBodyRotation::angularMomentum
+    (
+        parcel.orientation(),
+        omegaBody_[parcelI],
+        parcel.principalMoments()
+    );
 }
 
 

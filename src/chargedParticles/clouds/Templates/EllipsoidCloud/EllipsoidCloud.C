@@ -1,0 +1,201 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "EllipsoidCloud.H"
+#include "CollisionModel.H"
+#include "subCycleTime.H"
+
+// * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::EllipsoidCloud<CloudType>::moveCollide
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td,
+    const scalar deltaT
+)
+{
+    cloud.initialiseForces();
+
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    CloudType::move(cloud, td, deltaT);
+
+    td.part() = parcelType::trackingData::tpLinearTrack;
+    CloudType::move(cloud, td, deltaT);
+
+    td.part() = parcelType::trackingData::tpRotationalTrack;
+    CloudType::move(cloud, td, deltaT);
+
+    this->updateCellOccupancy();
+
+    cloud.calculateForces();
+
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    CloudType::move(cloud, td, deltaT);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
+(
+    const word& cloudName,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& mu,
+    const dimensionedVector& g,
+    bool readFields
+)
+:
+    CloudType(cloudName, rho, U, mu, g, false),
+    constProps_(this->particleProperties())
+{
+    if (this->solution().active() && readFields)
+    {
+        parcelType::readFields(*this);
+        this->deleteLostParticles();
+    }
+}
+
+
+template<class CloudType>
+Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
+(
+    EllipsoidCloud<CloudType>& c,
+    const word& name
+)
+:
+    CloudType(c, name),
+    constProps_(c.constProps_)
+{}
+
+
+template<class CloudType>
+Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
+(
+    const fvMesh& mesh,
+    const word& name,
+    const EllipsoidCloud<CloudType>& c
+)
+:
+    CloudType(mesh, name, c),
+    constProps_(c.constProps_)
+{}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::checkParcelProperties
+(
+    parcelType& parcel,
+    const scalar lagrangianDt,
+    const bool fullyDescribed
+)
+{
+    CloudType::checkParcelProperties(parcel, lagrangianDt, fullyDescribed);
+
+    // Injection models that give a diameter only: equal-volume shape
+    if (parcel.semiAxes() == vector::zero)
+    {
+        parcel.setShapeFromDiameter(constProps_.shape());
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::calculateForces()
+{
+    this->collision().collide();
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::storeState()
+{
+    cloudCopyPtr_.reset
+    (
+        static_cast<EllipsoidCloud<CloudType>*>
+        (
+            clone(this->name() + "Copy").ptr()
+        )
+    );
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::restoreState()
+{
+    this->cloudReset(cloudCopyPtr_());
+    cloudCopyPtr_.clear();
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::evolve()
+{
+    if (this->solution().canEvolve())
+    {
+        typename parcelType::trackingData td(*this);
+
+        // Injected parcels start at their given state: the move that
+        // InjectionModel::inject gives them is made a (null) velocity kick
+        // (their forces are zero), the whole first step is taken by motion()
+        td.part() = parcelType::trackingData::tpVelocityHalfStep;
+
+        this->solve(*this, td);
+    }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::EllipsoidCloud<CloudType>::motion
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td
+)
+{
+    const label nSubCycles = this->collision().nSubCycles();
+
+    if (nSubCycles > 1)
+    {
+        Info<< "    " << nSubCycles << " move-collide subCycles" << endl;
+
+        subCycleTime moveCollideSubCycle
+        (
+            const_cast<Time&>(this->db().time()),
+            nSubCycles
+        );
+
+        while (!(++moveCollideSubCycle).end())
+        {
+            moveCollide(cloud, td, this->db().time().deltaTValue());
+        }
+
+        moveCollideSubCycle.endSubCycle();
+    }
+    else
+    {
+        moveCollide(cloud, td, this->db().time().deltaTValue());
+    }
+
+    // Ready for the next injection (see evolve)
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::info()
+{
+    CloudType::info();
+
+    Info<< "    Rotational kinetic energy (ellipsoids) = "
+        << rotationalKineticEnergyOfEllipsoids() << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,684 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "EllipsoidCollision.H"
+#include "mathematicalConstants.H"
+#include "volFields.H"
+#include "PstreamBuffers.H"
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::restitution
+(
+    const scalar beta
+)
+{
+    // x'' = -max(0, x^3/2 + gamma x^1/4 x'), x(0) = 0, x'(0) = 1; the
+    // force never pulls, so once it vanishes while separating the parcel
+    // flies off freely and e = -x' (see Description)
+    const scalar gamma = Foam::sqrt(5.0)*mag(beta);
+
+    auto accel = [gamma](const scalar x, const scalar v)
+    {
+        const scalar xp = max(x, scalar(0));
+        return -max(xp*Foam::sqrt(xp) + gamma*Foam::sqrt(Foam::sqrt(xp))*v, 0.0);
+    };
+
+    // RK4; the contact lasts ~3.2 time units
+    const scalar h = 2e-4;
+    scalar x = 0, v = 1;
+    for (label i = 0; i < 1000000; ++i)
+    {
+        const scalar k1x = v, k1v = accel(x, v);
+        const scalar k2x = v + 0.5*h*k1v, k2v = accel(x + 0.5*h*k1x, v + 0.5*h*k1v);
+        const scalar k3x = v + 0.5*h*k2v, k3v = accel(x + 0.5*h*k2x, v + 0.5*h*k2v);
+        const scalar k4x = v + h*k3v, k4v = accel(x + h*k3x, v + h*k3v);
+        x += h/6*(k1x + 2*k2x + 2*k3x + k4x);
+        v += h/6*(k1v + 2*k2v + 2*k3v + k4v);
+
+        if (x <= 0 || (v < 0 && accel(x, v) == 0))
+        {
+            return max(-v, scalar(0));
+        }
+    }
+    return 0;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::dampingRatio(const scalar e)
+{
+    if (e >= 1)
+    {
+        return 0;
+    }
+
+    // restitution(beta) falls monotonically with |beta|: bracket, bisect
+    scalar lo = 0, hi = 1;
+    while (restitution(-hi) > e && hi < 1e3)
+    {
+        hi *= 2;
+    }
+    for (label iter = 0; iter < 60; ++iter)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        if (restitution(-mid) > e)
+        {
+            lo = mid;
+        }
+        else
+        {
+            hi = mid;
+        }
+    }
+    return -0.5*(lo + hi);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::readPositive
+(
+    const dictionary& d,
+    const word& key
+)
+{
+    const scalar value = d.get<scalar>(key);
+    if (!(value > 0) || !std::isfinite(value))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry " << key << " = " << value << " in "
+            << d.name().c_str() << " is out of range: it must be finite and > 0"
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
+
+template<class CloudType>
+typename Foam::EllipsoidCollision<CloudType>::contactLaw
+Foam::EllipsoidCollision<CloudType>::makeLaw
+(
+    const scalar E1, const scalar nu1,
+    const scalar E2, const scalar nu2,
+    const scalar e, const scalar mu,
+    const dictionary& dict
+)
+{
+    if (!(e > 0 && e <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry e (restitution coefficient) = " << e << " in "
+            << dict.name().c_str() << " is out of range (0, 1]"
+            << exit(FatalIOError);
+    }
+    if (!(mu >= 0) || !std::isfinite(mu))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry mu (friction coefficient) = " << mu << " in "
+            << dict.name().c_str() << " is out of range: it must be >= 0"
+            << exit(FatalIOError);
+    }
+    for (const scalar nu : {nu1, nu2})
+    {
+        if (!(nu > -1 && nu <= 0.5))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry poissonsRatio = " << nu
+                << " is out of range (-1, 0.5]" << exit(FatalIOError);
+        }
+    }
+
+    contactLaw law;
+
+    // Ruan Eq. (38)
+    law.Estar = 1/((1 - sqr(nu1))/E1 + (1 - sqr(nu2))/E2);
+
+    // Rasera Eq. (12) with G = E/(2(1 + nu))
+    const scalar G1 = E1/(2*(1 + nu1));
+    const scalar G2 = E2/(2*(1 + nu2));
+    law.Gstar = 1/((2 - nu1)/G1 + (2 - nu2)/G2);
+
+    law.beta = dampingRatio(e);
+    law.mu = mu;
+    law.e = e;
+    return law;
+}
+
+
+template<class CloudType>
+Foam::ellipsoid Foam::EllipsoidCollision<CloudType>::shell
+(
+    const parcelType& p
+) const
+{
+    const ellipsoid body(p.semiAxes(), p.position(), p.orientation());
+    return deltaBl_ > 0 ? body.inflated(deltaBl_) : body;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::EllipsoidCollision<CloudType>::pointVelocity
+(
+    const parcelType& p,
+    const point& x
+)
+{
+    return p.U() + (p.omega() ^ (x - p.position()));
+}
+
+
+template<class CloudType>
+Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
+(
+    const ellipsoidContact::result& c,
+    const vector& vRel,
+    const scalar mStar,
+    const contactLaw& law,
+    vector& xi
+) const
+{
+    const vector& n = c.n;
+    const scalar delta = c.overlap;
+    const scalar R = c.reducedRadius;
+    const scalar vn = vRel & n;             // > 0: approaching
+    const vector vt = vRel - vn*n;
+
+    // Normal: Hertz (Ruan Eq. 36) + dashpot (Rasera Eq. 9), no tension
+    const scalar sqrtRdelta = Foam::sqrt(R*delta);
+    const scalar Sn = 2*law.Estar*sqrtRdelta;                // dF/d delta
+    const scalar etaN =
+        2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(Sn*mStar);
+    const scalar Fn =
+        max((4.0/3.0)*law.Estar*sqrtRdelta*delta + etaN*vn, scalar(0));
+
+    vector F = -Fn*n;
+
+    if (tangential_ == tangentialModel::coulomb)
+    {
+        // Ruan Eq. (39): sliding friction against the slip velocity
+        const scalar vtMag = mag(vt);
+        if (vtMag > VSMALL)
+        {
+            F -= law.mu*Fn*vt/vtMag;
+        }
+    }
+    else
+    {
+        // Mindlin spring with history (Rasera Eqs. 7, 8, 11, 12): keep xi
+        // in the current tangent plane with its length, then stretch it
+        const scalar dt = this->owner().mesh().time().deltaTValue();
+        const scalar xiMag = mag(xi);
+        xi -= (xi & n)*n;
+        const scalar xiProjMag = mag(xi);
+        if (xiProjMag > VSMALL)
+        {
+            xi *= xiMag/xiProjMag;
+        }
+        xi += vt*dt;
+
+        const scalar kT = 8*law.Gstar*sqrtRdelta;
+        const scalar etaT =
+            2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(kT*mStar);
+        vector Ft = -kT*xi - etaT*vt;
+        const scalar FtMag = mag(Ft);
+        if (FtMag > law.mu*Fn)
+        {
+            // Slip: friction limit, spring length consistent with it
+            Ft *= law.mu*Fn/FtMag;
+            xi = kT > VSMALL ? -Ft/kT : vector(Zero);
+        }
+        F += Ft;
+    }
+
+    return F;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::preInteraction()
+{
+    for (parcelType& p : this->owner())
+    {
+        p.f() = Zero;
+        p.torque() = Zero;
+    }
+    nPairContacts_ = 0;
+    nWallContacts_ = 0;
+    maxRelOverlap_ = 0;
+    nUnconverged_ = 0;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::evaluatePair
+(
+    parcelType& pA,
+    parcelType& pB
+)
+{
+    // Bounding spheres of the collision shells
+    const scalar rA = cmptMax(pA.semiAxes()) + deltaBl_;
+    const scalar rB = cmptMax(pB.semiAxes()) + deltaBl_;
+    if (magSqr(pA.position() - pB.position()) > sqr(rA + rB))
+    {
+        return;
+    }
+
+    const ellipsoid eA(shell(pA));
+    const ellipsoid eB(shell(pB));
+    const ellipsoidContact::result c = ellipsoidContact::contact(eA, eB, method_);
+
+    if (!c.contact || c.overlap <= 0)
+    {
+        return;
+    }
+
+    ++nPairContacts_;
+    if (!c.converged)
+    {
+        ++nUnconverged_;
+    }
+    maxRelOverlap_ = max
+    (
+        maxRelOverlap_,
+        c.overlap/min(cmptMin(pA.semiAxes()), cmptMin(pB.semiAxes()))
+    );
+
+    // Contact point: the midpoint (exact angular momentum balance)
+    const point xc = 0.5*(c.x1 + c.x2);
+    const vector vRel = pointVelocity(pA, xc) - pointVelocity(pB, xc);
+    const scalar mStar = pA.mass()*pB.mass()/(pA.mass() + pB.mass());
+
+    vector& xiAB =
+        pA.collisionRecords().matchPairRecord
+        (
+            pB.origProc(),
+            pB.origId()
+        ).collisionData();
+    vector& xiBA =
+        pB.collisionRecords().matchPairRecord
+        (
+            pA.origProc(),
+            pA.origId()
+        ).collisionData();
+
+    const vector F = contactForce(c, vRel, mStar, pp_, xiAB);
+    xiBA = -xiAB;
+
+    // Forces and torques about the centroids (Ruan Eq. 40)
+    pA.f() += F;
+    pB.f() -= F;
+    pA.torque() += (xc - pA.position()) ^ F;
+    pB.torque() -= (xc - pB.position()) ^ F;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
+{
+    const labelListList& dil = il_.dil();
+    List<DynamicList<parcelType*>>& cellOccupancy =
+        this->owner().cellOccupancy();
+
+    forAll(dil, realCelli)
+    {
+        const DynamicList<parcelType*>& cellA = cellOccupancy[realCelli];
+        forAll(cellA, a)
+        {
+            parcelType& pA = *cellA[a];
+
+            // Parcels of the interacting cells
+            for (const label cellBi : dil[realCelli])
+            {
+                for (parcelType* pBPtr : cellOccupancy[cellBi])
+                {
+                    evaluatePair(pA, *pBPtr);
+                }
+            }
+
+            // The other parcels of this cell, each pair once
+            for (label b = a + 1; b < cellA.size(); ++b)
+            {
+                evaluatePair(pA, *cellA[b]);
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
+{
+    const labelListList& ril = il_.ril();
+    List<IDLList<parcelType>>& referredParticles = il_.referredParticles();
+    List<DynamicList<parcelType*>>& cellOccupancy =
+        this->owner().cellOccupancy();
+
+    forAll(ril, refCelli)
+    {
+        for (parcelType& referred : referredParticles[refCelli])
+        {
+            for (const label realCelli : ril[refCelli])
+            {
+                for (parcelType* pPtr : cellOccupancy[realCelli])
+                {
+                    evaluatePair(*pPtr, referred);
+                }
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::wallInteraction()
+{
+    const polyMesh& mesh = this->owner().mesh();
+    const labelListList& dil = il_.dil();
+    const labelListList& directWallFaces = il_.dwfil();
+    List<DynamicList<parcelType*>>& cellOccupancy =
+        this->owner().cellOccupancy();
+
+    // Contacts of one parcel (contact points on the walls) to keep
+    // coplanar neighbour faces from counting one contact twice
+    DynamicList<point> contactPoints;
+
+    forAll(dil, realCelli)
+    {
+        for (parcelType* pPtr : cellOccupancy[realCelli])
+        {
+            parcelType& p = *pPtr;
+            const ellipsoid e(shell(p));
+            const scalar r = cmptMax(p.semiAxes()) + deltaBl_;
+            contactPoints.clear();
+
+            // face points, unit normal out of the domain, centre
+            auto wallFace = [&](const face& f, const pointField& pts)
+            {
+                const pointHit nearest = f.nearestPoint(p.position(), pts);
+                if (nearest.distance() >= r)
+                {
+                    return;
+                }
+                const vector nOutOfDomain = f.unitNormal(pts);
+                const ellipsoidContact::result c =
+                    ellipsoidContact::ellipsoidPlane
+                    (
+                        e,
+                        f.centre(pts),
+                        -nOutOfDomain
+                    );
+                if (!c.contact || c.overlap <= 0)
+                {
+                    return;
+                }
+
+                // The contact belongs to this face if its plane point lies
+                // on the face (within round-off of the face size)
+                const scalar tol = 1e-9*Foam::sqrt(f.mag(pts)) + SMALL*r;
+                if (f.nearestPoint(c.x2, pts).distance() > tol)
+                {
+                    return;
+                }
+                for (const point& x : contactPoints)
+                {
+                    if (magSqr(x - c.x2) < sqr(1e-6*r))
+                    {
+                        return;
+                    }
+                }
+                contactPoints.append(c.x2);
+
+                ++nWallContacts_;
+                maxRelOverlap_ =
+                    max(maxRelOverlap_, c.overlap/cmptMin(p.semiAxes()));
+
+                const point xc = 0.5*(c.x1 + c.x2);
+                const vector vRel = pointVelocity(p, xc);
+                vector& xi =
+                    p.collisionRecords().matchWallRecord
+                    (
+                        xc - p.position(),
+                        r
+                    ).collisionData();
+
+                const vector F = contactForce(c, vRel, p.mass(), pw_, xi);
+                p.f() += F;
+                p.torque() += (xc - p.position()) ^ F;
+            };
+
+            for (const label facei : directWallFaces[realCelli])
+            {
+                wallFace(mesh.faces()[facei], mesh.points());
+            }
+
+            for (const label rwfi : il_.rwfilInverse()[realCelli])
+            {
+                const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
+                wallFace(rwf, rwf.points());
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::postInteraction()
+{
+    // Forget the history of contacts that ended
+    for (parcelType& p : this->owner())
+    {
+        p.collisionRecords().update();
+    }
+
+    if (nUnconverged_ > 0)
+    {
+        WarningInFunction
+            << nUnconverged_ << " ellipsoid contacts did not converge "
+            << "in the narrow phase (robust and polynomial methods)" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    CollisionModel<CloudType>(dict, owner, typeName),
+    pp_(),
+    pw_(),
+    tangential_(tangentialModel::mindlin),
+    deltaBl_(this->coeffDict().template lookupOrDefault<scalar>("deltaBl", 0)),
+    resolutionSteps_
+    (
+        this->coeffDict().template lookupOrDefault<label>
+        (
+            "collisionResolutionSteps",
+            50
+        )
+    ),
+    method_(ellipsoidContact::method::automatic),
+    il_
+    (
+        owner.mesh(),
+        readPositive(this->coeffDict(), "maxInteractionDistance"),
+        false,
+        this->coeffDict().template lookupOrDefault<word>("U", "U.carrier")
+    ),
+    nPairContacts_(0),
+    nWallContacts_(0),
+    maxRelOverlap_(0),
+    nUnconverged_(0),
+    particleE_(0),
+    particleNu_(0)
+{
+    const dictionary& coeffs = this->coeffDict();
+    const dictionary& props = owner.constProps().dict();
+
+    const scalar E = readPositive(props, "youngsModulus");
+    const scalar nu = props.get<scalar>("poissonsRatio");
+    particleE_ = E;
+    particleNu_ = nu;
+
+    pp_ = makeLaw
+    (
+        E, nu, E, nu,
+        coeffs.get<scalar>("e"), coeffs.get<scalar>("mu"),
+        coeffs
+    );
+
+    const dictionary& walls = coeffs.subDict("walls");
+    pw_ = makeLaw
+    (
+        E, nu,
+        readPositive(walls, "youngsModulus"), walls.get<scalar>("poissonsRatio"),
+        walls.get<scalar>("e"), walls.get<scalar>("mu"),
+        walls
+    );
+
+    const word tModel
+    (
+        coeffs.template lookupOrDefault<word>("tangentialModel", "mindlin")
+    );
+    if (tModel == "coulomb")
+    {
+        tangential_ = tangentialModel::coulomb;
+    }
+    else if (tModel != "mindlin")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry tangentialModel " << tModel
+            << " is unknown: valid are coulomb, mindlin" << exit(FatalIOError);
+    }
+
+    const word m(coeffs.template lookupOrDefault<word>("method", "automatic"));
+    if (m == "robust")
+    {
+        method_ = ellipsoidContact::method::robust;
+    }
+    else if (m == "polynomial")
+    {
+        method_ = ellipsoidContact::method::polynomial;
+    }
+    else if (m != "automatic")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry method " << m
+            << " is unknown: valid are automatic, robust, polynomial"
+            << exit(FatalIOError);
+    }
+
+    if (!(deltaBl_ >= 0) || resolutionSteps_ < 1)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entries deltaBl (" << deltaBl_ << ", must be >= 0) or "
+            << "collisionResolutionSteps (" << resolutionSteps_
+            << ", must be >= 1) out of range" << exit(FatalIOError);
+    }
+
+    Info<< "    Ellipsoid Hertz contact: E* = " << pp_.Estar
+        << ", G* = " << pp_.Gstar << ", e = " << pp_.e
+        << " (dashpot beta = " << pp_.beta << "), mu = " << pp_.mu
+        << ", tangential " << tModel << nl
+        << "    walls: E* = " << pw_.Estar << ", e = " << pw_.e
+        << " (beta = " << pw_.beta << "), mu = " << pw_.mu << endl;
+}
+
+
+template<class CloudType>
+Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
+(
+    const EllipsoidCollision<CloudType>& cm
+)
+:
+    CollisionModel<CloudType>(cm),
+    il_(cm.owner().mesh())
+{
+    NotImplemented;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
+{
+    // Worst case in the cloud: the fastest parcel hitting a copy of
+    // itself head-on (m* = m/2, relative speed 2|U|) at its sharpest tip
+    // (radius of curvature c^2/a for semi-axes a >= b >= c, R* = R/2);
+    // a wall contact (m* = m, R* = R, speed |U|) lasts longer
+    scalar minTc = GREAT;
+    scalar minRayleigh = GREAT;
+
+    const scalar E = pp_.Estar;
+    const scalar G = particleE_/(2*(1 + particleNu_));
+    for (const parcelType& p : this->owner())
+    {
+        const vector& s = p.semiAxes();
+        const scalar Rtip = sqr(cmptMin(s))/cmptMax(s);
+        const scalar m = p.mass();
+        const scalar v = max(2*mag(p.U()), VSMALL);
+
+        // Hertz collision duration (Johnson 1985)
+        const scalar tc =
+            2.868*Foam::pow(sqr(0.5*m)/(0.5*Rtip*sqr(E)*v), 0.2);
+        minTc = min(minTc, tc);
+
+        // Rayleigh time step, Rasera Eq. (13), for the report
+        minRayleigh = min
+        (
+            minRayleigh,
+            constant::mathematical::pi*cmptMin(s)*Foam::sqrt(p.rho()/G)
+           /(0.8766 + 0.163*particleNu_)
+        );
+    }
+    reduce(minTc, minOp<scalar>());
+    reduce(minRayleigh, minOp<scalar>());
+
+    const scalar deltaT = this->owner().mesh().time().deltaTValue();
+    if (minTc >= GREAT)
+    {
+        return 1;
+    }
+    const scalar dtC = minTc/resolutionSteps_;
+    const label n = max(label(1), label(std::ceil(deltaT/dtC - 1e-9)));
+
+    if (debug || this->owner().mesh().time().timeIndex() % 100 == 1)
+    {
+        Info<< "    Collision time " << minTc << " s / "
+            << resolutionSteps_ << " steps = " << dtC
+            << " s (Rayleigh time step, Rasera Eq. 13: " << minRayleigh
+            << " s): " << n << " sub-cycles of " << deltaT/n << " s" << endl;
+    }
+
+    return n;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::collide()
+{
+    preInteraction();
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    const label startOfRequests = Pstream::nRequests();
+    il_.sendReferredData(this->owner().cellOccupancy(), pBufs);
+    realRealInteraction();
+    il_.receiveReferredData(pBufs, startOfRequests);
+    realReferredInteraction();
+
+    wallInteraction();
+    postInteraction();
+}
+
+
+// ************************************************************************* //

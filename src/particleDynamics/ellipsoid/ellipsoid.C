@@ -1,0 +1,292 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ellipsoid.H"
+#include "error.H"
+#include "Ostream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+bool finite(const vector& v)
+{
+    return
+        std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+// R diag(d) R^T for a rotation tensor R
+symmTensor rotateDiagonal(const tensor& R, const vector& d)
+{
+    tensor S(Zero);
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            scalar s = 0;
+            for (direction k = 0; k < 3; ++k)
+            {
+                s += R(i, k)*d[k]*R(j, k);
+            }
+            S(i, j) = s;
+        }
+    }
+    return symm(S);
+}
+
+// Body-frame point scaled along its ray onto the surface
+vector ontoSurface(const vector& xb, const vector& ax, const char* caller)
+{
+    const scalar s2 =
+        sqr(xb.x()/ax.x()) + sqr(xb.y()/ax.y()) + sqr(xb.z()/ax.z());
+    if (!(s2 > 0) || !std::isfinite(s2))
+    {
+        FatalErrorInFunction
+            << caller << ": the point (body frame " << xb
+            << ") is the centre of the ellipsoid or not finite;"
+            << " a surface point is needed" << exit(FatalError);
+    }
+    return xb/Foam::sqrt(s2);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::ellipsoid::init()
+{
+    if
+    (
+        !finite(semiAxes_)
+     || !(semiAxes_.x() > 0) || !(semiAxes_.y() > 0) || !(semiAxes_.z() > 0)
+    )
+    {
+        FatalErrorInFunction
+            << "Ellipsoid semi-axes " << semiAxes_
+            << " are invalid: all three must be finite and > 0"
+            << exit(FatalError);
+    }
+
+    if (!finite(centre_))
+    {
+        FatalErrorInFunction
+            << "Ellipsoid centre " << centre_ << " is not finite"
+            << exit(FatalError);
+    }
+
+    // Proper orthogonal to 1e-9: a tensor off by more is not a rotation
+    // (e.g. built from an unnormalised quaternion), and the contact would
+    // silently use a distorted shape
+    const tensor E = (R_ & R_.T()) - tensor::I;
+    scalar err = 0;
+    for (direction i = 0; i < tensor::nComponents; ++i)
+    {
+        if (!std::isfinite(R_[i]))
+        {
+            err = GREAT;
+        }
+        err = max(err, mag(E[i]));
+    }
+    if (!(err < 1e-9) || !(det(R_) > 0))
+    {
+        FatalErrorInFunction
+            << "Ellipsoid rotation tensor " << R_
+            << " is not a rotation: |R R^T - I| = " << err
+            << ", det R = " << det(R_) << " (need R R^T = I, det R = 1)"
+            << exit(FatalError);
+    }
+
+    const vector& ax = semiAxes_;
+    S_ = rotateDiagonal
+    (
+        R_,
+        vector(1/sqr(ax.x()), 1/sqr(ax.y()), 1/sqr(ax.z()))
+    );
+    Sinv_ = rotateDiagonal(R_, cmptMultiply(ax, ax));
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::ellipsoid::ellipsoid
+(
+    const vector& semiAxes,
+    const point& centre,
+    const tensor& R
+)
+:
+    semiAxes_(semiAxes),
+    centre_(centre),
+    R_(R)
+{
+    init();
+}
+
+
+Foam::ellipsoid::ellipsoid
+(
+    const vector& semiAxes,
+    const point& centre,
+    const quaternion& q
+)
+:
+    semiAxes_(semiAxes),
+    centre_(centre),
+    R_(tensor::I)
+{
+    const scalar m = Foam::sqrt(sqr(q.w()) + magSqr(q.v()));
+    if (!(m > 0) || !std::isfinite(m))
+    {
+        FatalErrorInFunction
+            << "Ellipsoid orientation quaternion " << q
+            << " is zero or not finite" << exit(FatalError);
+    }
+    R_ = quaternion(q.w()/m, q.v()/m).R();
+    init();
+}
+
+
+Foam::ellipsoid::ellipsoid(const scalar radius, const point& centre)
+:
+    semiAxes_(radius, radius, radius),
+    centre_(centre),
+    R_(tensor::I)
+{
+    init();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::ellipsoid Foam::ellipsoid::inflated(const scalar deltaBl) const
+{
+    if (!(deltaBl >= 0) || !std::isfinite(deltaBl))
+    {
+        FatalErrorInFunction
+            << "Buffer-layer thickness delta_bl = " << deltaBl
+            << " is invalid: it must be finite and >= 0 (Ruan Eq. 41)"
+            << exit(FatalError);
+    }
+    return ellipsoid(semiAxes_ + vector::uniform(deltaBl), centre_, R_);
+}
+
+
+Foam::ellipsoid Foam::ellipsoid::moved
+(
+    const point& centre,
+    const tensor& R
+) const
+{
+    return ellipsoid(semiAxes_, centre, R);
+}
+
+
+Foam::vector Foam::ellipsoid::normal(const point& x) const
+{
+    const vector g = S_ & (x - centre_);
+    const scalar m = mag(g);
+    if (!(m > 0) || !std::isfinite(m))
+    {
+        FatalErrorInFunction
+            << "No normal at " << x << ": it is the centre of the ellipsoid "
+            << centre_ << " or not finite" << exit(FatalError);
+    }
+    return g/m;
+}
+
+
+Foam::scalar Foam::ellipsoid::curvature(const point& x) const
+{
+    const vector& ax = semiAxes_;
+    const vector xb = ontoSurface(toBody(x), ax, "curvature");
+
+    // Ruan Eq. (37) term by term, with u_i = x_i^2/a_i^2
+    const scalar a2 = sqr(ax.x()), b2 = sqr(ax.y()), c2 = sqr(ax.z());
+    const scalar ux = sqr(xb.x())/a2, uy = sqr(xb.y())/b2, uz = sqr(xb.z())/c2;
+
+    // Eq. (37b)
+    const scalar h = 1/Foam::sqrt(ux/a2 + uy/b2 + uz/c2);
+
+    // Eq. (37a)
+    return
+        0.5*h*h*h
+       *(
+            (ux + uy)/(a2*b2)
+          + (uy + uz)/(b2*c2)
+          + (uz + ux)/(c2*a2)
+        );
+}
+
+
+Foam::scalar Foam::ellipsoid::gaussianCurvature(const point& x) const
+{
+    const vector& ax = semiAxes_;
+    const vector xb = ontoSurface(toBody(x), ax, "gaussianCurvature");
+    const scalar a2 = sqr(ax.x()), b2 = sqr(ax.y()), c2 = sqr(ax.z());
+    const scalar hm2 =
+        sqr(xb.x())/sqr(a2) + sqr(xb.y())/sqr(b2) + sqr(xb.z())/sqr(c2);
+    return 1/(a2*b2*c2*sqr(hm2));
+}
+
+
+Foam::point Foam::ellipsoid::support(const vector& m) const
+{
+    const vector w = Sinv_ & m;
+    const scalar h2 = m & w;
+    if (!(h2 > 0) || !std::isfinite(h2))
+    {
+        FatalErrorInFunction
+            << "Support point for the direction " << m
+            << " is undefined: the direction must be finite and non-zero"
+            << exit(FatalError);
+    }
+    return centre_ + w/Foam::sqrt(h2);
+}
+
+
+Foam::SquareMatrix<Foam::scalar> Foam::ellipsoid::characteristicMatrix
+(
+    const scalar deltaBl
+) const
+{
+    // Eq. (41) (Eq. 22 for deltaBl = 0) rotated and translated, Eq. (23):
+    // P(x) = x^T S x - 2 (S x_c)^T x + x_c^T S x_c - 1 gives the blocks
+    // S (Eq. 26), b/2 = -S x_c (Eq. 27), c = x_c^T S x_c - 1 (Eq. 28)
+    const ellipsoid shell(inflated(deltaBl));  // checks deltaBl
+
+    const tensor S(shell.S_);
+    const vector Sc = shell.S_ & centre_;
+
+    SquareMatrix<scalar> Q(4, Zero);
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            Q(i, j) = S(i, j);
+        }
+        Q(i, 3) = -Sc[i];
+        Q(3, i) = -Sc[i];
+    }
+    Q(3, 3) = (centre_ & Sc) - 1;
+
+    return Q;
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const ellipsoid& e)
+{
+    os  << "ellipsoid(semiAxes " << e.semiAxes_
+        << ", centre " << e.centre_
+        << ", R " << e.R_ << ')';
+    return os;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,923 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ellipsoidContact.H"
+#include "error.H"
+#include "Ostream.H"
+#include "mathematicalConstants.H"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+// Eigen (a well-kept library) for the 4x4 eigenproblem of the intersection
+// test, the sixth-order polynomial roots and the small linear solves.
+// Its headers are not written for OpenFOAM's warning set.
+// GCC 12 reports false "may be used uninitialized" inside Eigen's
+// fixed-size Schur/Hessenberg code after inlining; off for this file
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wold-style-cast"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wdeprecated-copy"
+#include <Eigen/Dense>
+#include <unsupported/Eigen/Polynomials>
+#pragma GCC diagnostic pop
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+using ellipsoidContact::method;
+using ellipsoidContact::result;
+
+const scalar eps = std::numeric_limits<scalar>::epsilon();
+
+
+// Unit vector along d, (1 0 0) for a zero d (coincident centres)
+vector unitOrX(const vector& d)
+{
+    const scalar m = mag(d);
+    return m > 0 ? d/m : vector(1, 0, 0);
+}
+
+
+// The no-contact result (see ellipsoidContact.H)
+result noContact(const ellipsoid& e1, const ellipsoid& e2)
+{
+    result r;
+    r.contact = false;
+    r.x1 = e1.centre();
+    r.x2 = e2.centre();
+    r.n = unitOrX(e2.centre() - e1.centre());
+    r.used = method::none;
+    return r;
+}
+
+
+// Reduced radius R = 1/(K1 + K2), Ruan section 2.3.3 with K of Eq. (37)
+scalar reducedRadius
+(
+    const ellipsoid& e1,
+    const point& x1,
+    const ellipsoid& e2,
+    const point& x2
+)
+{
+    return 1/(e1.curvature(x1) + e2.curvature(x2));
+}
+
+
+// Orthonormal tangent basis (t1, t2) of the unit vector m
+void tangents(const vector& m, vector& t1, vector& t2)
+{
+    // The coordinate axis least aligned with m gives a well-conditioned t1
+    const vector am(mag(m.x()), mag(m.y()), mag(m.z()));
+    vector e(Zero);
+    if (am.x() <= am.y() && am.x() <= am.z()) e.x() = 1;
+    else if (am.y() <= am.z()) e.y() = 1;
+    else e.z() = 1;
+
+    t1 = e - (e & m)*m;
+    t1 /= mag(t1);
+    t2 = m ^ t1;
+}
+
+
+/*---------------------------------------------------------------------------*\
+                 Robust method: penetration depth along n
+\*---------------------------------------------------------------------------*/
+
+// g(n) = h1(n) + h2(n) - n.(c2 - c1), h the support functions; grad g =
+// x1(n) - x2(n) (x1 support point of 1 along n, x2 of 2 along -n)
+class depthFunction
+{
+    const symmTensor& M1_;
+    const symmTensor& M2_;
+    const vector d_;
+
+public:
+
+    // State at one direction
+    struct state
+    {
+        vector m;           // unit direction
+        vector w1, w2;      // M1 m, M2 m
+        scalar h1, h2;      // support distances
+        scalar g;           // depth
+    };
+
+    depthFunction(const ellipsoid& e1, const ellipsoid& e2)
+    :
+        M1_(e1.Sinv()),
+        M2_(e2.Sinv()),
+        d_(e2.centre() - e1.centre())
+    {}
+
+    const vector& d() const
+    {
+        return d_;
+    }
+
+    state eval(const vector& m) const
+    {
+        state s;
+        s.m = m;
+        s.w1 = M1_ & m;
+        s.w2 = M2_ & m;
+        s.h1 = Foam::sqrt(m & s.w1);
+        s.h2 = Foam::sqrt(m & s.w2);
+        s.g = s.h1 + s.h2 - (m & d_);
+        return s;
+    }
+
+    // grad g = x1 - x2 (relative to the centres: no large coordinates)
+    vector grad(const state& s) const
+    {
+        return s.w1/s.h1 + s.w2/s.h2 - d_;
+    }
+
+    // Euclidean Hessian of h1 + h2 applied to t:
+    // (M t)/h - (M m)(M m . t)/h^3 for each body
+    vector hessian(const state& s, const vector& t) const
+    {
+        return
+            (M1_ & t)/s.h1 - s.w1*((s.w1 & t)/(s.h1*s.h1*s.h1))
+          + (M2_ & t)/s.h2 - s.w2*((s.w2 & t)/(s.h2*s.h2*s.h2));
+    }
+};
+
+
+// Directions on the unit sphere for the start search (Fibonacci lattice:
+// near-uniform, deterministic). 98 points: ~20 deg spacing.
+const label nSample = 98;
+
+const std::array<vector, nSample>& sampleDirections()
+{
+    // Thread-safe initialisation of a function-local static (C++11)
+    static const std::array<vector, nSample> dirs = []()
+    {
+        std::array<vector, nSample> v;
+        const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
+        for (label i = 0; i < nSample; ++i)
+        {
+            const scalar z = 1 - (2*i + 1)/scalar(nSample);
+            const scalar r = Foam::sqrt(max(0.0, 1 - z*z));
+            const scalar phi = golden*i;
+            v[i] = vector(r*Foam::cos(phi), r*Foam::sin(phi), z);
+        }
+        return v;
+    }();
+    return dirs;
+}
+
+
+// Damped Newton minimisation of g on the unit sphere from m0
+depthFunction::state newtonOnSphere
+(
+    const depthFunction& f,
+    const vector& m0,
+    const scalar L,
+    label& iterations,
+    bool& converged
+)
+{
+    // Tolerances: the tangential residual x1 - x2 is a difference of
+    // lengths of size L, known to a few eps*L; a step of 1e-14 rad moves a
+    // point by < 1e-12 of the largest radius of curvature considered.
+    const scalar tolG = 64*eps*L;
+    const scalar tolStep = 1e-14;
+    const scalar maxStep = 0.5;     // trust radius [rad]
+    const label maxIter = 60;
+
+    depthFunction::state s = f.eval(m0/mag(m0));
+    converged = false;
+    iterations = 0;
+
+    for (label iter = 0; iter < maxIter; ++iter)
+    {
+        iterations = iter + 1;
+
+        const vector grad = f.grad(s);
+        vector t1, t2;
+        tangents(s.m, t1, t2);
+        const scalar G1 = t1 & grad, G2 = t2 & grad;
+        const scalar magG = Foam::sqrt(G1*G1 + G2*G2);
+
+        if (magG <= tolG)
+        {
+            converged = true;
+            break;
+        }
+
+        // Riemannian Hessian on the sphere: projected Euclidean Hessian
+        // minus (m . grad g) I = g I (g is 1-homogeneous). At the contact
+        // it is R1 + R2 - overlap I (radii-of-curvature tensors).
+        const vector Ht1 = f.hessian(s, t1);
+        const vector Ht2 = f.hessian(s, t2);
+        const scalar H11 = (t1 & Ht1) - s.g;
+        const scalar H22 = (t2 & Ht2) - s.g;
+        const scalar H12 = 0.5*((t1 & Ht2) + (t2 & Ht1));
+
+        // Levenberg-Marquardt shift if not safely positive definite
+        const scalar tr = 0.5*(H11 + H22);
+        const scalar rad = Foam::sqrt(sqr(0.5*(H11 - H22)) + H12*H12);
+        const scalar lMin = tr - rad, lMax = tr + rad;
+        scalar mu = 0;
+        if (!(lMin > 1e-10*max(mag(lMax), L)))
+        {
+            mu = -lMin + 1e-3*max(mag(lMax), L);
+        }
+
+        const scalar A11 = H11 + mu, A22 = H22 + mu, detA = A11*A22 - H12*H12;
+        scalar s1 = -(A22*G1 - H12*G2)/detA;
+        scalar s2 = -(A11*G2 - H12*G1)/detA;
+        scalar magS = Foam::sqrt(s1*s1 + s2*s2);
+        if (!std::isfinite(magS))
+        {
+            // Degenerate Hessian: steepest descent on the trust radius
+            s1 = -G1/magG*maxStep;
+            s2 = -G2/magG*maxStep;
+            magS = maxStep;
+            mu = 1;
+        }
+        if (magS > maxStep)
+        {
+            s1 *= maxStep/magS;
+            s2 *= maxStep/magS;
+            magS = maxStep;
+        }
+
+        // Pure Newton steps in the quadratic-convergence region are taken
+        // whole: their decrease of g is below the round-off of g
+        const vector step = s1*t1 + s2*t2;
+        depthFunction::state trial;
+        scalar alpha = 1;
+        bool accepted = false;
+
+        if (mu == 0 && magS < 1e-4)
+        {
+            const vector m = s.m + step;
+            trial = f.eval(m/mag(m));
+            accepted = true;
+        }
+        else
+        {
+            const scalar slope = G1*s1 + G2*s2;
+            for (label k = 0; k < 50; ++k)
+            {
+                const vector m = s.m + alpha*step;
+                trial = f.eval(m/mag(m));
+                if (trial.g <= s.g + 1e-4*alpha*slope)
+                {
+                    accepted = true;
+                    break;
+                }
+                alpha *= 0.5;
+            }
+        }
+
+        if (!accepted)
+        {
+            // No representable decrease: g is flat to round-off here
+            converged = (magG <= 1e-8*L);
+            break;
+        }
+
+        s = trial;
+
+        if (alpha*magS <= tolStep)
+        {
+            converged = true;
+            break;
+        }
+    }
+
+    return s;
+}
+
+
+// The robust method without the intersection test
+result robustCore
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const vector& nGuess
+)
+{
+    const depthFunction f(e1, e2);
+    const scalar L = e1.boundingRadius() + e2.boundingRadius() + mag(f.d());
+
+    // Candidate starts: the sampled directions, the centre line, the guess
+    const std::array<vector, nSample>& dirs = sampleDirections();
+    scalar gSample[nSample];
+    for (label i = 0; i < nSample; ++i)
+    {
+        gSample[i] = f.eval(dirs[i]).g;
+    }
+
+    const label maxStarts = 5;
+    vector starts[maxStarts];
+    label nStarts = 0;
+
+    if (magSqr(nGuess) > 0 && std::isfinite(magSqr(nGuess)))
+    {
+        starts[nStarts++] = nGuess/mag(nGuess);
+    }
+    if (magSqr(f.d()) > 0)
+    {
+        starts[nStarts++] = f.d()/mag(f.d());
+    }
+
+    // Up to three best samples at least ~40 deg apart (distinct basins)
+    bool used[nSample] = {};
+    for (label k = 0; k < 3; ++k)
+    {
+        label best = -1;
+        for (label i = 0; i < nSample; ++i)
+        {
+            if (!used[i] && (best < 0 || gSample[i] < gSample[best]))
+            {
+                bool farEnough = true;
+                for (label j = 0; j < nStarts; ++j)
+                {
+                    if ((dirs[i] & starts[j]) > 0.76)
+                    {
+                        farEnough = false;
+                        break;
+                    }
+                }
+                if (farEnough)
+                {
+                    best = i;
+                }
+                else
+                {
+                    used[i] = true;
+                }
+            }
+        }
+        if (best < 0)
+        {
+            break;
+        }
+        used[best] = true;
+        starts[nStarts++] = dirs[best];
+    }
+
+    // Refine every start, keep the lowest g (converged runs preferred)
+    depthFunction::state bestState = f.eval(starts[0]);
+    bestState.g = GREAT;
+    label bestIters = 0;
+    bool bestConverged = false;
+
+    for (label k = 0; k < nStarts; ++k)
+    {
+        label iters = 0;
+        bool conv = false;
+        const depthFunction::state s =
+            newtonOnSphere(f, starts[k], L, iters, conv);
+
+        const bool better =
+            (conv && !bestConverged)
+         || (conv == bestConverged && s.g < bestState.g);
+
+        if (better && std::isfinite(s.g))
+        {
+            bestState = s;
+            bestIters = iters;
+            bestConverged = conv;
+        }
+    }
+
+    result r;
+    r.contact = true;
+    r.used = method::robust;
+    r.iterations = bestIters;
+    r.converged = bestConverged;
+    r.n = bestState.m;
+    r.x1 = e1.centre() + bestState.w1/bestState.h1;
+    r.x2 = e2.centre() - bestState.w2/bestState.h2;
+
+    // g = n.(x1 - x2) by 1-homogeneity, without the cancellation of
+    // differencing two possibly large coordinates
+    r.overlap = max(bestState.g, scalar(0));
+    r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
+
+    return r;
+}
+
+
+/*---------------------------------------------------------------------------*\
+                 Polynomial method, Ruan Eqs. (29)-(31)
+\*---------------------------------------------------------------------------*/
+
+// Polynomial in tau up to degree 6, coefficients in increasing order
+typedef std::array<scalar, 7> poly;
+
+poly polyConst(const scalar c0, const scalar c1 = 0)
+{
+    poly p;
+    p.fill(0);
+    p[0] = c0;
+    p[1] = c1;
+    return p;
+}
+
+poly operator*(const poly& a, const poly& b)
+{
+    poly p;
+    p.fill(0);
+    for (label i = 0; i < 7; ++i)
+    {
+        for (label j = 0; i + j < 7; ++j)
+        {
+            p[i + j] += a[i]*b[j];
+        }
+    }
+    return p;
+}
+
+poly operator+(const poly& a, const poly& b)
+{
+    poly p;
+    for (label i = 0; i < 7; ++i) p[i] = a[i] + b[i];
+    return p;
+}
+
+poly operator-(const poly& a, const poly& b)
+{
+    poly p;
+    for (label i = 0; i < 7; ++i) p[i] = a[i] - b[i];
+    return p;
+}
+
+poly operator*(const scalar s, const poly& a)
+{
+    poly p;
+    for (label i = 0; i < 7; ++i) p[i] = s*a[i];
+    return p;
+}
+
+// Value and derivative (Horner)
+void polyEval(const poly& p, const scalar t, scalar& v, scalar& dv)
+{
+    v = p[6];
+    dv = 0;
+    for (label i = 5; i >= 0; --i)
+    {
+        dv = dv*t + v;
+        v = v*t + p[i];
+    }
+}
+
+scalar polyValue(const poly& p, const scalar t)
+{
+    scalar v, dv;
+    polyEval(p, t, v, dv);
+    return v;
+}
+
+
+// Point of surface a on the innermost level surface of b: the minimum of
+// P_b subject to P_a = 0, Ruan Eqs. (29)-(31). Returns false if no valid
+// real root was found.
+bool levelSurfacePoint
+(
+    const ellipsoid& ea,
+    const ellipsoid& eb,
+    const scalar L,
+    point& x,
+    label& iterations
+)
+{
+    // Body frame of a, centred on c_a, lengths scaled by L:
+    //   P_a(xi) = xi^T Da xi - 1        (S_a = Da, b_a = 0, c_a = -1)
+    //   P_b(xi) = (xi - e)^T Sb (xi - e) - 1
+    const tensor& Ra = ea.R();
+    const vector& ax = ea.semiAxes();
+    const vector Da(sqr(L/ax.x()), sqr(L/ax.y()), sqr(L/ax.z()));
+    const vector e = (Ra.T() & (eb.centre() - ea.centre()))/L;
+    const tensor SbT = (Ra.T() & tensor(eb.S()) & Ra)*sqr(L);
+    const vector w = SbT & e;
+
+    // Eq. (30): (Sb + tau Da) xi = Sb e, i.e. xi = adj(A) w/det(A) with
+    // A(tau) = Sb + tau Da, y(tau) = adj(A(tau)) w, Phi(tau) = det A(tau)
+    poly A[3][3];
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            A[i][j] = polyConst(SbT(i, j), i == j ? Da[i] : 0);
+        }
+    }
+
+    poly adj[3][3];
+    for (label i = 0; i < 3; ++i)
+    {
+        for (label j = 0; j < 3; ++j)
+        {
+            const label j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const label i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+            adj[i][j] = A[j1][i1]*A[j2][i2] - A[j1][i2]*A[j2][i1];
+        }
+    }
+
+    const poly Phi = A[0][0]*adj[0][0] + A[0][1]*adj[1][0] + A[0][2]*adj[2][0];
+
+    poly y[3];
+    for (label i = 0; i < 3; ++i)
+    {
+        y[i] = w[0]*adj[i][0] + w[1]*adj[i][1] + w[2]*adj[i][2];
+    }
+
+    // Eq. (31) with S1 = Da, b1 = 0, c1 = -1: y^T Da y - Phi^2 = 0
+    const poly p =
+        Da[0]*(y[0]*y[0]) + Da[1]*(y[1]*y[1]) + Da[2]*(y[2]*y[2])
+      - Phi*Phi;
+
+    Eigen::Matrix<scalar, 7, 1> coeffs;
+    for (label i = 0; i < 7; ++i)
+    {
+        coeffs(i) = p[i];
+    }
+
+    Eigen::PolynomialSolver<scalar, 6> solver;
+    solver.compute(coeffs);
+    const Eigen::PolynomialSolver<scalar, 6>::RootsType& roots =
+        solver.roots();
+
+    bool found = false;
+    scalar bestPb = GREAT;
+    vector bestXi(Zero);
+    iterations = 0;
+
+    for (label k = 0; k < roots.size(); ++k)
+    {
+        // Real roots, allowing for the imaginary round-off of a near-double
+        // root; polished by Newton on Eq. (31)
+        scalar tau = roots(k).real();
+        if (!(mag(roots(k).imag()) <= 1e-3*(1 + mag(tau))))
+        {
+            continue;
+        }
+        for (label it = 0; it < 8; ++it)
+        {
+            scalar v, dv;
+            polyEval(p, tau, v, dv);
+            if (dv == 0)
+            {
+                break;
+            }
+            const scalar dTau = v/dv;
+            ++iterations;
+            if (!std::isfinite(dTau))
+            {
+                break;
+            }
+            tau -= dTau;
+            if (mag(dTau) <= 4*eps*(1 + mag(tau)))
+            {
+                break;
+            }
+        }
+
+        // Eq. (30)
+        const scalar phi = polyValue(Phi, tau);
+        const vector yv
+        (
+            polyValue(y[0], tau),
+            polyValue(y[1], tau),
+            polyValue(y[2], tau)
+        );
+        const vector xi = yv/phi;
+        if (!std::isfinite(magSqr(xi)))
+        {
+            continue;
+        }
+
+        // A root of Eq. (31) puts xi on surface a; spurious roots (e.g. of
+        // the repeated factors of a spheroid, where Phi = 0) do not
+        const scalar Pa =
+            Da[0]*sqr(xi[0]) + Da[1]*sqr(xi[1]) + Da[2]*sqr(xi[2]) - 1;
+        if (!(mag(Pa) < 1e-6))
+        {
+            continue;
+        }
+
+        const vector dxi = xi - e;
+        const scalar Pb = (dxi & (SbT & dxi)) - 1;
+        if (Pb < bestPb)
+        {
+            bestPb = Pb;
+            bestXi = xi;
+            found = true;
+        }
+    }
+
+    x = ea.centre() + L*(Ra & bestXi);
+    return found;
+}
+
+
+// The polynomial method without the intersection test
+result polynomialCore(const ellipsoid& e1, const ellipsoid& e2)
+{
+    const scalar L = max(e1.boundingRadius(), e2.boundingRadius());
+
+    result r;
+    r.contact = true;
+    r.used = method::polynomial;
+
+    label it1 = 0, it2 = 0;
+    const bool ok1 = levelSurfacePoint(e1, e2, L, r.x1, it1);
+    const bool ok2 = levelSurfacePoint(e2, e1, L, r.x2, it2);
+    r.iterations = it1 + it2;
+    r.converged = ok1 && ok2;
+
+    if (!r.converged)
+    {
+        // Keep the result usable: centres, centre line, no overlap
+        r.x1 = e1.centre();
+        r.x2 = e2.centre();
+        r.n = unitOrX(e2.centre() - e1.centre());
+        r.overlap = 0;
+        r.reducedRadius = 0;
+        return r;
+    }
+
+    // Eq. (33) at x1; overlap |x1 - x2| (section 2.3.3)
+    r.n = e1.normal(r.x1);
+    r.overlap = mag(r.x1 - r.x2);
+    r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
+
+    return r;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+const char* Foam::ellipsoidContact::methodName(const method m)
+{
+    switch (m)
+    {
+        case method::automatic: return "automatic";
+        case method::sphere: return "sphere";
+        case method::polynomial: return "polynomial";
+        case method::robust: return "robust";
+        case method::plane: return "plane";
+        case method::none: return "none";
+    }
+    return "unknown";
+}
+
+
+bool Foam::ellipsoidContact::intersect
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2
+)
+{
+    const vector d = e2.centre() - e1.centre();
+    const scalar r1 = e1.boundingRadius(), r2 = e2.boundingRadius();
+
+    // Bounding spheres apart: separated, no eigenproblem
+    if (magSqr(d) > sqr(r1 + r2))
+    {
+        return false;
+    }
+
+    // Frame x = c1 + L xi: Q1 = diag(S1 L^2, -1) (inverse analytic),
+    // Q2 from S2 L^2 and the centre e = d/L, Ruan Eqs. (22)-(23)
+    const scalar L = max(r1, r2);
+    const scalar L2 = sqr(L);
+    const tensor S1inv(e1.Sinv());
+    const tensor S2(e2.S());
+    const vector e = d/L;
+    const vector S2e = (S2 & e)*L2;
+
+    Eigen::Matrix4d Q1inv = Eigen::Matrix4d::Zero();
+    Eigen::Matrix4d Q2 = Eigen::Matrix4d::Zero();
+    for (direction i = 0; i < 3; ++i)
+    {
+        for (direction j = 0; j < 3; ++j)
+        {
+            Q1inv(i, j) = S1inv(i, j)/L2;
+            Q2(i, j) = S2(i, j)*L2;
+        }
+        Q2(i, 3) = -S2e[i];
+        Q2(3, i) = -S2e[i];
+    }
+    Q1inv(3, 3) = -1;
+    Q2(3, 3) = (e & S2e) - 1;
+
+    const Eigen::EigenSolver<Eigen::Matrix4d> es(Q1inv*Q2, false);
+    if (es.info() != Eigen::Success)
+    {
+        // Not seen in practice; err on the side of a contact check
+        return true;
+    }
+
+    // Wang, Wang & Kim 2001: separated iff two distinct negative real
+    // eigenvalues (a complex pair, Ruan/Alfano-Greer, is one way to fail)
+    scalar neg[4];
+    label nNeg = 0;
+    for (label k = 0; k < 4; ++k)
+    {
+        const std::complex<scalar> ev = es.eigenvalues()(k);
+        if (ev.imag() == 0 && ev.real() < 0)
+        {
+            neg[nNeg++] = ev.real();
+        }
+    }
+
+    return !(nNeg == 2 && neg[0] != neg[1]);
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2
+)
+{
+    if (!e1.isSphere() || !e2.isSphere())
+    {
+        FatalErrorInFunction
+            << "Sphere-sphere contact of non-spheres: " << e1 << " and "
+            << e2 << nl << "    use method automatic, robust or polynomial"
+            << exit(FatalError);
+    }
+
+    const scalar r1 = e1.semiAxes().x(), r2 = e2.semiAxes().x();
+    const vector d = e2.centre() - e1.centre();
+    const scalar dist = mag(d);
+    const scalar overlap = r1 + r2 - dist;
+
+    result r;
+    r.n = unitOrX(d);
+    r.used = method::sphere;
+
+    if (!(overlap > 0))
+    {
+        r.contact = false;
+        r.x1 = e1.centre();
+        r.x2 = e2.centre();
+        r.used = method::none;
+        return r;
+    }
+
+    r.contact = true;
+    r.x1 = e1.centre() + r1*r.n;
+    r.x2 = e2.centre() - r2*r.n;
+    r.overlap = overlap;
+    r.reducedRadius = r1*r2/(r1 + r2);
+    return r;
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::polynomialMethod
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2
+)
+{
+    if (!intersect(e1, e2))
+    {
+        return noContact(e1, e2);
+    }
+    return polynomialCore(e1, e2);
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::robustMethod
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const vector& nGuess
+)
+{
+    if (!intersect(e1, e2))
+    {
+        return noContact(e1, e2);
+    }
+    return robustCore(e1, e2, nGuess);
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const method m
+)
+{
+    switch (m)
+    {
+        case method::sphere:
+        {
+            return sphereSphere(e1, e2);
+        }
+        case method::polynomial:
+        {
+            return polynomialMethod(e1, e2);
+        }
+        case method::robust:
+        {
+            return robustMethod(e1, e2);
+        }
+        case method::automatic:
+        {
+            if (e1.isSphere() && e2.isSphere())
+            {
+                return sphereSphere(e1, e2);
+            }
+            if (!intersect(e1, e2))
+            {
+                return noContact(e1, e2);
+            }
+            const result r = robustCore(e1, e2, Zero);
+            if (r.converged)
+            {
+                return r;
+            }
+            const result p = polynomialCore(e1, e2);
+            return p.converged ? p : r;
+        }
+        default:
+        {
+            FatalErrorInFunction
+                << "Method " << methodName(m)
+                << " is not a method for a pair of ellipsoids; use"
+                << " automatic, sphere, polynomial or robust"
+                << exit(FatalError);
+        }
+    }
+    return result();
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
+(
+    const ellipsoid& e,
+    const point& p0,
+    const vector& nOut
+)
+{
+    const scalar magN = mag(nOut);
+    if (!std::isfinite(magN) || !(mag(magN - 1) <= 1e-8))
+    {
+        FatalErrorInFunction
+            << "Plane normal " << nOut << " (magnitude " << magN
+            << ") is not a finite unit vector" << exit(FatalError);
+    }
+    if (!std::isfinite(magSqr(p0)))
+    {
+        FatalErrorInFunction
+            << "Plane point " << p0 << " is not finite" << exit(FatalError);
+    }
+
+    // Deepest point below the plane: the support point along -nOut
+    result r;
+    r.used = method::plane;
+    r.n = -nOut;
+    r.x1 = e.support(-nOut);
+
+    // Depth from the centre (support distance minus the centre's height)
+    // rather than from x1: no cancellation of large coordinates
+    const scalar depth = e.supportDistance(nOut) - ((e.centre() - p0) & nOut);
+
+    r.contact = depth > 0;
+    r.overlap = max(depth, scalar(0));
+    r.x2 = r.x1 + depth*nOut;
+    r.reducedRadius = r.contact ? 1/e.curvature(r.x1) : 0;
+    return r;
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<
+(
+    Ostream& os,
+    const ellipsoidContact::result& r
+)
+{
+    os  << "contact " << r.contact
+        << " x1 " << r.x1 << " x2 " << r.x2 << " n " << r.n
+        << " overlap " << r.overlap
+        << " reducedRadius " << r.reducedRadius
+        << " method " << ellipsoidContact::methodName(r.used)
+        << " iterations " << r.iterations
+        << " converged " << r.converged;
+    return os;
+}
+
+
+// ************************************************************************* //

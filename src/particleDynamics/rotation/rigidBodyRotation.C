@@ -1,0 +1,323 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "rigidBodyRotation.H"
+#include "error.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+// Out-of-class definitions: C++11 needs them once the constants are bound
+// to references (e.g. by Foam::max or a test macro)
+constexpr Foam::scalar Foam::rigidBodyRotation::sphereTolerance;
+constexpr Foam::scalar Foam::rigidBodyRotation::unitTolerance;
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::rigidBodyRotation::checkMoments
+(
+    const vector& I,
+    const char* caller
+)
+{
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        // !(x > 0) also catches NaN
+        if (!(I[i] > 0) || !std::isfinite(I[i]))
+        {
+            FatalErrorIn(caller)
+                << "Principal moments of inertia " << I
+                << " are out of range: each must be finite and > 0"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::rigidBodyRotation::checkOrientation
+(
+    const quaternion& q,
+    const char* caller
+)
+{
+    const scalar magQ = mag(q);
+
+    // A NaN component makes magQ NaN and the comparison false
+    if (!(mag(magQ - 1) <= unitTolerance))
+    {
+        FatalErrorIn(caller)
+            << "Orientation quaternion " << q << " of magnitude " << magQ
+            << " is not a finite unit quaternion (tolerance "
+            << unitTolerance << ")" << nl
+            << "    Build it with rigidBodyRotation::fromEulerAngles or"
+            << " normalise it once when reading it"
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::rigidBodyRotation::checkFinite
+(
+    const vector& v,
+    const char* name,
+    const char* caller
+)
+{
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        if (!std::isfinite(v[i]))
+        {
+            FatalErrorIn(caller)
+                << name << " = " << v << " is not finite"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::rigidBodyRotation::axisRotation
+(
+    const direction i,
+    const scalar h,
+    const vector& I,
+    quaternion& q,
+    vector& Lp
+)
+{
+    // Flow of H_i = Lp_i^2/(2 I_i): Lp_i is constant, so the body spins
+    // about its axis i at the constant rate Lp_i/I_i and the sub-step is
+    // an exact rotation by alpha
+    const scalar alpha = Lp[i]/I[i]*h;
+    const scalar c = std::cos(0.5*alpha);
+    const scalar s = std::sin(0.5*alpha);
+
+    // Body-frame rotation composes on the right (Ruan Eq. 18:
+    // dq/dt = q*(0, Omega_p)/2)
+    vector e(Zero);
+    e[i] = s;
+    q = q*quaternion(c, e);
+
+    // Seen from the body, the fixed inertial L turns by -alpha about the
+    // axis i (torque-free Euler equations, Ruan Eq. 20:
+    // dLp/dt = Lp ^ Omega_p). (i, j, k) is a cyclic permutation.
+    const direction j = (i + 1) % 3;
+    const direction k = (i + 2) % 3;
+
+    // cos(alpha), sin(alpha) from the half angle: no further trigonometry
+    const scalar ca = (c - s)*(c + s);
+    const scalar sa = 2*s*c;
+
+    const scalar Lj = Lp[j];
+    const scalar Lk = Lp[k];
+    Lp[j] = ca*Lj + sa*Lk;
+    Lp[k] = ca*Lk - sa*Lj;
+}
+
+
+// * * * * * * * * * * * * * * * * Orientation * * * * * * * * * * * * * * * //
+
+Foam::quaternion Foam::rigidBodyRotation::fromEulerAngles
+(
+    const scalar phi,
+    const scalar theta,
+    const scalar psi
+)
+{
+    checkFinite(vector(phi, theta, psi), "Euler angles", FUNCTION_NAME);
+
+    // Ruan Eq. (17)
+    const scalar cd = std::cos(0.5*(phi - psi));
+    const scalar sd = std::sin(0.5*(phi - psi));
+    const scalar cs = std::cos(0.5*(phi + psi));
+    const scalar ss = std::sin(0.5*(phi + psi));
+    const scalar ct = std::cos(0.5*theta);
+    const scalar st = std::sin(0.5*theta);
+
+    const scalar eps1 = cd*st;
+    const scalar eps2 = sd*st;
+    const scalar eps3 = ss*ct;
+    const scalar eta = cs*ct;
+
+    return quaternion(eta, vector(eps1, eps2, eps3));
+}
+
+
+Foam::tensor Foam::rigidBodyRotation::inertialToParticle(const quaternion& q)
+{
+    checkOrientation(q, FUNCTION_NAME);
+
+    // Ruan's R of Eq. (16) is the transpose of the body-to-inertial
+    // rotation of q = (eta, eps)
+    return q.R().T();
+}
+
+
+Foam::vector Foam::rigidBodyRotation::toInertial
+(
+    const quaternion& q,
+    const vector& vp
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    return q.R() & vp;
+}
+
+
+Foam::vector Foam::rigidBodyRotation::toBody
+(
+    const quaternion& q,
+    const vector& vin
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+
+    // R^T & v without forming the transpose
+    return vin & q.R();
+}
+
+
+// * * * * * * * * * * * * * * * * * Inertia * * * * * * * * * * * * * * * * //
+
+Foam::vector Foam::rigidBodyRotation::principalMoments
+(
+    const scalar mass,
+    const vector& semiAxes
+)
+{
+    if (!(mass > 0) || !std::isfinite(mass))
+    {
+        FatalErrorInFunction
+            << "Particle mass " << mass
+            << " is out of range: it must be finite and > 0"
+            << exit(FatalError);
+    }
+    for (direction i = 0; i < vector::nComponents; ++i)
+    {
+        if (!(semiAxes[i] > 0) || !std::isfinite(semiAxes[i]))
+        {
+            FatalErrorInFunction
+                << "Ellipsoid semi-axes " << semiAxes
+                << " are out of range: each must be finite and > 0"
+                << exit(FatalError);
+        }
+    }
+
+    const scalar a2 = sqr(semiAxes.x());
+    const scalar b2 = sqr(semiAxes.y());
+    const scalar c2 = sqr(semiAxes.z());
+
+    // Ruan, below Eq. (20)
+    return (mass/5)*vector(b2 + c2, c2 + a2, a2 + b2);
+}
+
+
+// * * * * * * * * * * * * * Angular momentum and velocity * * * * * * * * * //
+
+Foam::vector Foam::rigidBodyRotation::omegaBody
+(
+    const quaternion& q,
+    const vector& Lin,
+    const vector& I
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    checkMoments(I, FUNCTION_NAME);
+    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
+
+    // Principal axes: Lp = diag(I) Omega_p
+    return vector(cmptDivide(Lin & q.R(), I));
+}
+
+
+Foam::vector Foam::rigidBodyRotation::angularMomentum
+(
+    const quaternion& q,
+    const vector& omegaBody,
+    const vector& I
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    checkMoments(I, FUNCTION_NAME);
+    checkFinite(omegaBody, "Body angular velocity", FUNCTION_NAME);
+
+    return q.R() & vector(cmptMultiply(I, omegaBody));
+}
+
+
+Foam::scalar Foam::rigidBodyRotation::kineticEnergy
+(
+    const quaternion& q,
+    const vector& Lin,
+    const vector& I
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    checkMoments(I, FUNCTION_NAME);
+    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
+
+    const vector Lp = Lin & q.R();
+    return 0.5*(Lp & vector(cmptDivide(Lp, I)));
+}
+
+
+// * * * * * * * * * * * * * * * Time integration  * * * * * * * * * * * * * //
+
+void Foam::rigidBodyRotation::freeRotation
+(
+    quaternion& q,
+    const vector& Lin,
+    const vector& I,
+    const scalar dt
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    checkMoments(I, FUNCTION_NAME);
+    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
+    if (!std::isfinite(dt))
+    {
+        FatalErrorInFunction
+            << "Time step dt = " << dt << " is not finite"
+            << exit(FatalError);
+    }
+
+    const scalar Imax = max(I.x(), max(I.y(), I.z()));
+    const scalar Imin = min(I.x(), min(I.y(), I.z()));
+
+    if (Imax - Imin <= sphereTolerance*Imax)
+    {
+        // Sphere: Omega = L/I is constant in the inertial frame, so the
+        // motion is one exact rotation about the fixed axis L/|L|,
+        // composed on the left (an inertial-frame rotation)
+        const scalar magL = mag(Lin);
+        if (magL > 0)
+        {
+            const scalar Is = (I.x() + I.y() + I.z())/3;
+            q = quaternion(Lin/magL, magL/Is*dt)*q;
+        }
+    }
+    else
+    {
+        // Symmetric (Strang) composition X(dt/2) Y(dt/2) Z(dt) Y(dt/2)
+        // X(dt/2) of exact axis rotations (NO_SQUISH, Miller et al. 2002):
+        // symplectic, reversible, second order. The body-frame L is
+        // carried through the sub-steps, not recomputed, so that each
+        // sub-step is the exact flow of its term of H.
+        vector Lp = Lin & q.R();
+
+        const scalar h = 0.5*dt;
+        axisRotation(vector::X, h, I, q, Lp);
+        axisRotation(vector::Y, h, I, q, Lp);
+        axisRotation(vector::Z, dt, I, q, Lp);
+        axisRotation(vector::Y, h, I, q, Lp);
+        axisRotation(vector::X, h, I, q, Lp);
+    }
+
+    // Round-off control only: every sub-step is a unit quaternion product
+    q.normalize();
+}
+
+
+// ************************************************************************* //
