@@ -150,13 +150,57 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
 
 
 template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::bufferLayer
+(
+    const parcelType& p
+) const
+{
+    return deltaBl_ >= 0 ? deltaBl_ : deltaBlRatio_*cmptMin(p.semiAxes());
+}
+
+
+template<class CloudType>
 Foam::ellipsoid Foam::EllipsoidCollision<CloudType>::shell
 (
     const parcelType& p
 ) const
 {
     const ellipsoid body(p.semiAxes(), p.position(), p.orientation());
-    return deltaBl_ > 0 ? body.inflated(deltaBl_) : body;
+    const scalar dBl = bufferLayer(p);
+    return dBl > 0 ? body.inflated(dBl) : body;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
+(
+    const parcelType& pA,
+    const word& other,
+    const scalar overlap,
+    const scalar twoDeltaBl,
+    const scalar vn,
+    const scalar mStar,
+    const scalar R
+)
+{
+    // Ruan section 3.3.1 keeps delta_N,max < 8 % of 2 delta_bl
+    if (twoDeltaBl <= 0 || overlap <= 0.08*twoDeltaBl || nBufferWarnings_ >= 10)
+    {
+        return;
+    }
+    ++nBufferWarnings_;
+
+    // Eq. (52): E > m v0^2/((2 delta_bl)^(5/2) R^(1/2))
+    const scalar Emin =
+        mStar*sqr(vn)/(Foam::pow(twoDeltaBl, 2.5)*Foam::sqrt(R));
+
+    WarningInFunction
+        << "Contact of parcel (origProc " << pA.origProc() << ", origId "
+        << pA.origId() << ") with " << other.c_str() << ": overlap "
+        << overlap << " m = " << overlap/twoDeltaBl
+        << " of the two buffer layers (2 deltaBl = " << twoDeltaBl
+        << " m; Ruan keeps it below 0.08). Eq. (52) asks for E > " << Emin
+        << " Pa at the approach velocity " << vn << " m/s" << endl;
 }
 
 
@@ -248,6 +292,7 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     }
     nPairContacts_ = 0;
     nWallContacts_ = 0;
+    nBufferWarnings_ = 0;
     maxRelOverlap_ = 0;
     nUnconverged_ = 0;
 }
@@ -261,8 +306,8 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 )
 {
     // Bounding spheres of the collision shells
-    const scalar rA = cmptMax(pA.semiAxes()) + deltaBl_;
-    const scalar rB = cmptMax(pB.semiAxes()) + deltaBl_;
+    const scalar rA = cmptMax(pA.semiAxes()) + bufferLayer(pA);
+    const scalar rB = cmptMax(pB.semiAxes()) + bufferLayer(pB);
     if (magSqr(pA.position() - pB.position()) > sqr(rA + rB))
     {
         return;
@@ -308,6 +353,18 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     const vector F = contactForce(c, vRel, mStar, pp_, xiAB);
     xiBA = -xiAB;
+
+    checkBufferLayer
+    (
+        pA,
+        "parcel (origProc " + Foam::name(pB.origProc()) + ", origId "
+      + Foam::name(pB.origId()) + ")",
+        c.overlap,
+        bufferLayer(pA) + bufferLayer(pB),
+        vRel & c.n,
+        mStar,
+        c.reducedRadius
+    );
 
     // Forces and torques about the centroids (Ruan Eq. 40)
     pA.f() += F;
@@ -393,7 +450,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         {
             parcelType& p = *pPtr;
             const ellipsoid e(shell(p));
-            const scalar r = cmptMax(p.semiAxes()) + deltaBl_;
+            const scalar r = cmptMax(p.semiAxes()) + bufferLayer(p);
             contactPoints.clear();
 
             // face points, unit normal out of the domain, centre
@@ -447,6 +504,11 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     ).collisionData();
 
                 const vector F = contactForce(c, vRel, p.mass(), pw_, xi);
+                checkBufferLayer
+                (
+                    p, "a wall", c.overlap, bufferLayer(p),
+                    vRel & c.n, p.mass(), c.reducedRadius
+                );
                 p.f() += F;
                 p.torque() += (xc - p.position()) ^ F;
             };
@@ -497,7 +559,20 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     pp_(),
     pw_(),
     tangential_(tangentialModel::mindlin),
-    deltaBl_(this->coeffDict().template lookupOrDefault<scalar>("deltaBl", 0)),
+    deltaBl_(this->coeffDict().template lookupOrDefault<scalar>("deltaBl", -1)),
+    deltaBlRatio_
+    (
+        this->coeffDict().template lookupOrDefault<scalar>("deltaBlRatio", 0.05)
+    ),
+    chi_
+    (
+        owner.constProps().dict().template lookupOrDefault<scalar>
+        (
+            "stiffnessRatio",
+            1
+        )
+    ),
+    nBufferWarnings_(0),
     resolutionSteps_
     (
         this->coeffDict().template lookupOrDefault<label>
@@ -524,7 +599,27 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     const dictionary& coeffs = this->coeffDict();
     const dictionary& props = owner.constProps().dict();
 
-    const scalar E = readPositive(props, "youngsModulus");
+    if (!(chi_ > 0 && chi_ <= 1))
+    {
+        FatalIOErrorInFunction(props)
+            << "Entry stiffnessRatio (chi = E_R/E_O, Ruan Eq. 44) = " << chi_
+            << " is out of range (0, 1]" << exit(FatalIOError);
+    }
+    if (this->coeffDict().found("deltaBl") && !(deltaBl_ >= 0))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry deltaBl = " << deltaBl_ << " is out of range: >= 0"
+            << exit(FatalIOError);
+    }
+    if (!(deltaBlRatio_ >= 0 && deltaBlRatio_ < 1))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry deltaBlRatio = " << deltaBlRatio_
+            << " is out of range [0, 1)" << exit(FatalIOError);
+    }
+
+    // Reduced stiffness: all contact moduli scaled by chi
+    const scalar E = chi_*readPositive(props, "youngsModulus");
     const scalar nu = props.get<scalar>("poissonsRatio");
     particleE_ = E;
     particleNu_ = nu;
@@ -540,7 +635,8 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     pw_ = makeLaw
     (
         E, nu,
-        readPositive(walls, "youngsModulus"), walls.get<scalar>("poissonsRatio"),
+        chi_*readPositive(walls, "youngsModulus"),
+        walls.get<scalar>("poissonsRatio"),
         walls.get<scalar>("e"), walls.get<scalar>("mu"),
         walls
     );
@@ -577,15 +673,19 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             << exit(FatalIOError);
     }
 
-    if (!(deltaBl_ >= 0) || resolutionSteps_ < 1)
+    if (resolutionSteps_ < 1)
     {
         FatalIOErrorInFunction(coeffs)
-            << "Entries deltaBl (" << deltaBl_ << ", must be >= 0) or "
-            << "collisionResolutionSteps (" << resolutionSteps_
-            << ", must be >= 1) out of range" << exit(FatalIOError);
+            << "Entry collisionResolutionSteps = " << resolutionSteps_
+            << " is out of range: >= 1" << exit(FatalIOError);
     }
 
-    Info<< "    Ellipsoid Hertz contact: E* = " << pp_.Estar
+    Info<< "    Ellipsoid Hertz contact: stiffness ratio chi = " << chi_
+        << ", buffer layer "
+        << (deltaBl_ >= 0
+            ? Foam::name(deltaBl_) + " m"
+            : Foam::name(deltaBlRatio_) + " x smallest semi-axis").c_str()
+        << nl << "    E* = " << pp_.Estar
         << ", G* = " << pp_.Gstar << ", e = " << pp_.e
         << " (dashpot beta = " << pp_.beta << "), mu = " << pp_.mu
         << ", tangential " << tModel << nl

@@ -54,6 +54,67 @@ void Foam::DirectCoulomb<CloudType>::gatherCharges
 }
 
 
+template<class CloudType>
+void Foam::DirectCoulomb<CloudType>::correctContactPairs
+(
+    const List<pointField>& allX,
+    const List<scalarField>& allQ,
+    vectorField& f
+) const
+{
+    // (origProc, origId) of every parcel of every processor, to find the
+    // contact partners named by the collision records
+    List<labelList> allIds(Pstream::nProcs());
+    labelList& ids = allIds[Pstream::myProcNo()];
+    ids.setSize(2*this->owner().size());
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        ids[2*i] = p.origProc();
+        ids[2*i + 1] = p.origId();
+        ++i;
+    }
+    Pstream::gatherList(allIds);
+    Pstream::scatterList(allIds);
+
+    HashTable<labelPair, labelPair, Hash<labelPair>> where;
+    forAll(allIds, proci)
+    {
+        for (label j = 0; j < allIds[proci].size()/2; ++j)
+        {
+            where.insert
+            (
+                labelPair(allIds[proci][2*j], allIds[proci][2*j + 1]),
+                labelPair(proci, j)
+            );
+        }
+    }
+
+    const label me = Pstream::myProcNo();
+    i = 0;
+    for (const auto& p : this->owner())
+    {
+        for (const auto& record : p.collisionRecords().pairRecords())
+        {
+            const auto iter = where.cfind
+            (
+                labelPair(record.origProcOfOther(), record.origIdOfOther())
+            );
+            if (iter.found())
+            {
+                const labelPair& pj = iter.val();
+                f[i] += contactCorrection_*coulomb_.pairForce
+                (
+                    allX[me][i], allQ[me][i],
+                    allX[pj.first()][pj.second()], allQ[pj.first()][pj.second()]
+                );
+            }
+        }
+        ++i;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -64,7 +125,20 @@ Foam::DirectCoulomb<CloudType>::DirectCoulomb
 )
 :
     ElectrostaticsModel<CloudType>(dict, owner, typeName),
-    coulomb_(readEpsilonR(this->coeffDict()))
+    coulomb_(readEpsilonR(this->coeffDict())),
+    contactCorrection_
+    (
+        Foam::pow
+        (
+            owner.constProps().dict().template lookupOrDefault<scalar>
+            (
+                "stiffnessRatio",
+                1
+            ),
+            0.4
+        )
+      - 1
+    )
 {
     Info<< "    Direct pairwise Coulomb sum, medium epsilonR = "
         << coulomb_.epsilonR() << endl;
@@ -78,7 +152,8 @@ Foam::DirectCoulomb<CloudType>::DirectCoulomb
 )
 :
     ElectrostaticsModel<CloudType>(em),
-    coulomb_(em.coulomb_)
+    coulomb_(em.coulomb_),
+    contactCorrection_(em.contactCorrection_)
 {}
 
 
@@ -104,6 +179,11 @@ void Foam::DirectCoulomb<CloudType>::calculate()
         {
             coulomb_.addForces(x, q, allX[proci], allQ[proci], f);
         }
+    }
+
+    if (contactCorrection_ != 0)
+    {
+        correctContactPairs(allX, allQ, f);
     }
 
     label i = 0;

@@ -4,6 +4,25 @@
 
 #include "ElectrostaticsModel.H"
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::dictionary Foam::ElectrostaticsModel<CloudType>::withCoeffs
+(
+    const dictionary& dict,
+    const word& type
+)
+{
+    // All coefficients have defaults: <type>Coeffs may be omitted
+    dictionary d(dict);
+    if (!d.found(type + "Coeffs"))
+    {
+        d.add(word(type + "Coeffs"), dictionary());
+    }
+    return d;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -21,7 +40,7 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
     const word& type
 )
 :
-    CloudSubModelBase<CloudType>(owner, dict, typeName, type)
+    CloudSubModelBase<CloudType>(owner, withCoeffs(dict, type), typeName, type)
 {}
 
 
