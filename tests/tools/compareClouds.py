@@ -11,49 +11,12 @@ lines: particle count, max |xA - xB| / max|xA| (positions, Cartesian
 """
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
 
-
-def read_field(path):
-    """Values of an ASCII IOField (scalar or vector) as an (N,) or (N,3) array;
-    handles the list forms 'N(...)', 'N{v}' and 'N\\n(\\n...\\n)'."""
-    text = open(path).read()
-    body = text.split("// * * *", 1)[-1]
-    body = re.sub(r"//.*", "", body)
-    m = re.search(r"(\d+)\s*([({])", body)
-    if not m:
-        raise ValueError(f"{path}: no list found")
-    n, opener = int(m.group(1)), m.group(2)
-    rest = body[m.end():]
-    if opener == "{":                       # uniform list N{value}
-        inner = rest[:rest.index("}")]
-        v = np.array(inner.replace("(", " ").replace(")", " ").split(), dtype=float)
-        return np.tile(v, (n, 1)) if v.size > 1 else np.full(n, v[0])
-    depth, end = 1, 0
-    for i, c in enumerate(rest):
-        depth += (c == "(") - (c == ")")
-        if depth == 0:
-            end = i
-            break
-    inner = rest[:end]
-    if "(" in inner:                        # vectors
-        rows = re.findall(r"\(([^()]*)\)", inner)
-        arr = np.array([r.split() for r in rows], dtype=float).reshape(-1, 3)
-    else:
-        arr = np.array(inner.split(), dtype=float)
-    if len(arr) != n:
-        raise ValueError(f"{path}: {len(arr)} values, header says {n}")
-    return arr
-
-
-def read_positions(path):
-    """Cartesian positions of a 'positions' file: lines '(x y z) celli'."""
-    text = open(path).read().split("// * * *", 1)[-1]
-    rows = re.findall(r"\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+([-+0-9.eE]+)\s*\)\s+-?\d+", text)
-    return np.array(rows, dtype=float).reshape(-1, 3)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "etc", "python"))
+from foamLagrangian import read_field, read_positions  # noqa: E402
 
 
 def load(time_dir, cloud):

@@ -6,8 +6,8 @@ Application
 
 Description
     Benchmark (not a test) of the narrow-phase contact cost per pair of the
-    kernels of src/particleDynamics (ellipsoidContact.H): wall-clock time
-    per pair in ns of
+    kernels of src/particleDynamics (ellipsoidContact.H): CPU time per pair
+    in ns (see Timing) of
 
         intersect       ellipsoidContact::intersect alone
         automatic       ellipsoidContact::contact(e1, e2) (default selector)
@@ -45,16 +45,16 @@ Description
 
     Timing: per population one untimed warm-up sweep over all pairs per
     kernel, then 5 rounds in which every kernel makes one timed pass
-    (interleaved, so a change of the machine's load hits all kernels
-    alike); a pass is as many sweeps over all pairs as make it last
-    >= 20 ms (1 for the expensive kernels, more for the cheap ones, so
-    that clock resolution and interruptions do not count); reported is
-    the median of the 5 passes divided by the pairs swept. The clock is the CPU time of the thread
+    (interleaved, so a change of the machine's load hits all kernels alike);
+    a pass is as many sweeps over all pairs as make it last >= 20 ms (1 for
+    the expensive kernels, more for the cheap ones, so that clock resolution
+    and interruptions do not count); reported is the median of the 5 passes
+    divided by the pairs swept. The clock is the CPU time of the thread
     (CLOCK_THREAD_CPUTIME_ID), not advanced while the thread waits for a
     core, so other processes on a shared machine disturb it far less than
     the wall clock (both totals are printed). Every result is folded into a
-    checksum that passes through an optimisation barrier (the kernels are
-    in a shared library anyway, so calls cannot be elided). Single thread.
+    checksum that passes through an optimisation barrier (the kernels are in
+    a shared library anyway, so calls cannot be elided). Single thread.
 
     Floating-point exception trapping (trapFpe in etc/controlDict,
     FOAM_SIGFPE, switched on by argList) is switched off: the kernels check
@@ -116,7 +116,7 @@ SourceFiles
 #include <unistd.h>
 
 #ifndef NPB_BUILD_OPTIONS
-    #define NPB_BUILD_OPTIONS "unknown (NPB_BUILD_OPTIONS not set by Make/options)"
+    #define NPB_BUILD_OPTIONS "unknown (not set by Make/options)"
 #endif
 
 using namespace Foam;
@@ -246,8 +246,10 @@ population makePopulation
     {
         const scalar c1Min = lengthScale*uniform(g, 0.8, 1.25);
         const scalar c2Min = lengthScale*uniform(g, 0.8, 1.25);
-        const vector ax1 = pop.spheres ? vector::one*c1Min : randomAxes(g, ar, c1Min);
-        const vector ax2 = pop.spheres ? vector::one*c2Min : randomAxes(g, ar, c2Min);
+        const vector ax1 =
+            pop.spheres ? vector::one*c1Min : randomAxes(g, ar, c1Min);
+        const vector ax2 =
+            pop.spheres ? vector::one*c2Min : randomAxes(g, ar, c2Min);
         const tensor R1 = pop.spheres ? tensor::I : randomRotation(g);
         const tensor R2 = pop.spheres ? tensor::I : randomRotation(g);
         const point c1
@@ -748,21 +750,25 @@ int main(int argc, char *argv[])
 
     std::printf("CPU time per pair [ns]:\n\n");
     std::printf("| population | pairs | intersect | automatic | sphere"
-        " | robust | polynomial | ellipsoid-plane | robust mean iterations"
-        " | robust not converged | polynomial not converged |\n");
+        " | robust | polynomial | ellipsoid-plane"
+        " | robust mean Newton iterations | robust not converged"
+        " | polynomial not converged |\n");
     std::printf("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
     for (const row& r : rows)
     {
         char iters[32];
         std::snprintf(iters, sizeof(iters), "%.1f", r.robustIterations);
-        std::printf("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+        std::printf
+        (
+            "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
             r.name.c_str(), int(r.nPairs),
             fmtTime(r.tIntersect).c_str(), fmtTime(r.tAutomatic).c_str(),
             fmtTime(r.tSphere).c_str(), fmtTime(r.tRobust).c_str(),
             fmtTime(r.tPolynomial).c_str(), fmtTime(r.tPlane).c_str(),
             r.nContact ? iters : "-",
             fmtFraction(r.robustNotConverged, r.nContact).c_str(),
-            fmtFraction(r.polyNotConverged, r.nContact).c_str());
+            fmtFraction(r.polyNotConverged, r.nContact).c_str()
+        );
     }
 
     std::printf("\nRatio to the sphere fast path (automatic, spheres:"
@@ -809,7 +815,7 @@ int main(int argc, char *argv[])
     ).count();
 
     std::printf("\nTimed passes: CPU %.1f s, wall %.1f s (CPU/wall %.2f);"
-        " whole run %.1f s wall; checksum %.6e\n",
+        " whole run %.1f s wall; sink %.3e (optimisation barrier)\n",
         1e-9*totalCpu, 1e-9*totalWall, totalCpu/max(totalWall, scalar(1)),
         seconds, checksum);
 

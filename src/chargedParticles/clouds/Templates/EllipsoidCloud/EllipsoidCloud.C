@@ -191,10 +191,28 @@ void Foam::EllipsoidCloud<CloudType>::motion
 template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::info()
 {
-    CloudType::info();
+    // The kinematic information; CollidingCloud::info() would add the
+    // rotational energy of spheres, replaced here by the ellipsoids' one
+    CloudType::cloudType::info();
+
+    // Contacts from the collision records (current contacts only: the
+    // collision model forgets the records of contacts that ended)
+    scalar nPair = 0, nWall = 0, nParcels = this->size();
+    for (const parcelType& p : *this)
+    {
+        nPair += p.collisionRecords().pairRecords().size();
+        nWall += p.collisionRecords().wallRecords().size();
+    }
+    reduce(nPair, sumOp<scalar>());
+    reduce(nWall, sumOp<scalar>());
+    reduce(nParcels, sumOp<scalar>());
 
     Info<< "    Rotational kinetic energy (ellipsoids) = "
-        << rotationalKineticEnergyOfEllipsoids() << nl;
+        << rotationalKineticEnergyOfEllipsoids() << nl
+        << "    Contacts: particle-particle     = " << label(nPair/2 + 0.5)
+        << ", particle-wall = " << label(nWall) << nl
+        << "    Coordination number             = "
+        << (nParcels > 0 ? nPair/nParcels : 0) << nl;
 }
 
 

@@ -183,12 +183,18 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
     const scalar R
 )
 {
-    // Ruan section 3.3.1 keeps delta_N,max < 8 % of 2 delta_bl
-    if (twoDeltaBl <= 0 || overlap <= 0.08*twoDeltaBl || nBufferWarnings_ >= 10)
+    // The overlap approaches the buffer layers (half of them used up): the
+    // true surfaces come close to touching. Ruan (section 3.3.1) keeps it
+    // below 8 %. The first warnings name the pair; then a count per step.
+    if (twoDeltaBl <= 0 || overlap <= 0.5*twoDeltaBl)
     {
         return;
     }
     ++nBufferWarnings_;
+    if (nBufferWarningsTotal_++ >= 5)
+    {
+        return;
+    }
 
     // Eq. (52): E > m v0^2/((2 delta_bl)^(5/2) R^(1/2))
     const scalar Emin =
@@ -200,7 +206,9 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
         << overlap << " m = " << overlap/twoDeltaBl
         << " of the two buffer layers (2 deltaBl = " << twoDeltaBl
         << " m; Ruan keeps it below 0.08). Eq. (52) asks for E > " << Emin
-        << " Pa at the approach velocity " << vn << " m/s" << endl;
+        << " Pa at the approach velocity " << mag(vn) << " m/s"
+        << (nBufferWarningsTotal_ == 5 ? " (further cases are counted)" : "")
+        << endl;
 }
 
 
@@ -315,7 +323,16 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     const ellipsoid eA(shell(pA));
     const ellipsoid eB(shell(pB));
-    const ellipsoidContact::result c = ellipsoidContact::contact(eA, eB, method_);
+
+    // Two spheres always take the analytic fast path
+    const ellipsoidContact::result c = ellipsoidContact::contact
+    (
+        eA,
+        eB,
+        eA.isSphere() && eB.isSphere()
+      ? ellipsoidContact::method::automatic
+      : method_
+    );
 
     if (!c.contact || c.overlap <= 0)
     {
@@ -537,6 +554,12 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         p.collisionRecords().update();
     }
 
+    if (nBufferWarnings_ > 0 && nBufferWarningsTotal_ > 5)
+    {
+        Info<< "    " << nBufferWarnings_ << " contacts with an overlap beyond"
+            << " half the buffer layers (deltaBl)" << endl;
+    }
+
     if (nUnconverged_ > 0)
     {
         WarningInFunction
@@ -573,6 +596,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         )
     ),
     nBufferWarnings_(0),
+    nBufferWarningsTotal_(0),
     resolutionSteps_
     (
         this->coeffDict().template lookupOrDefault<label>
