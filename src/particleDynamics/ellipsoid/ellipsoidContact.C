@@ -11,11 +11,13 @@
 #include <cmath>
 #include <limits>
 
-// Eigen (a well-kept library) for the 4x4 eigenproblem of the intersection
-// test, the sixth-order polynomial roots and the small linear solves.
-// Its headers are not written for OpenFOAM's warning set.
-// GCC 12 reports false "may be used uninitialized" inside Eigen's
-// fixed-size Schur/Hessenberg code after inlining; off for this file
+// Eigen (a well-kept library) for the 4x4 non-symmetric eigenproblem of
+// the intersection test and the roots of the sixth-order polynomial (the
+// 2x2 Newton systems and Ruan's Eq. 30 are solved in closed form). Its
+// headers are not written for OpenFOAM's warning set; GCC 12 also reports
+// false "may be used uninitialized" inside Eigen's fixed-size
+// Schur/Hessenberg code after inlining, which push/pop cannot scope: those
+// two are off for this file.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic push
@@ -153,26 +155,64 @@ public:
 
 
 // Directions on the unit sphere for the start search (Fibonacci lattice:
-// near-uniform, deterministic). 98 points: ~20 deg spacing.
-const label nSample = 98;
+// near-uniform, deterministic; 128 points, ~18 deg apart) with the
+// nearest neighbours of each, to find the local minima of the sampled g
+const label nSample = 128;
+const label nNeighbour = 6;
 
-const std::array<vector, nSample>& sampleDirections()
+struct sampleSet
+{
+    std::array<vector, nSample> dir;
+    std::array<std::array<label, nNeighbour>, nSample> nbr;
+};
+
+const sampleSet& samples()
 {
     // Thread-safe initialisation of a function-local static (C++11)
-    static const std::array<vector, nSample> dirs = []()
+    static const sampleSet set = []()
     {
-        std::array<vector, nSample> v;
+        sampleSet S;
         const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
         for (label i = 0; i < nSample; ++i)
         {
             const scalar z = 1 - (2*i + 1)/scalar(nSample);
             const scalar r = Foam::sqrt(max(0.0, 1 - z*z));
             const scalar phi = golden*i;
-            v[i] = vector(r*Foam::cos(phi), r*Foam::sin(phi), z);
+            S.dir[i] = vector(r*Foam::cos(phi), r*Foam::sin(phi), z);
         }
-        return v;
+        for (label i = 0; i < nSample; ++i)
+        {
+            // Insertion of the nNeighbour largest cosines
+            scalar best[nNeighbour];
+            for (label k = 0; k < nNeighbour; ++k)
+            {
+                best[k] = -2;
+                S.nbr[i][k] = i;
+            }
+            for (label j = 0; j < nSample; ++j)
+            {
+                if (j == i) continue;
+                const scalar c = S.dir[i] & S.dir[j];
+                label k = nNeighbour;
+                while (k > 0 && c > best[k - 1])
+                {
+                    if (k < nNeighbour)
+                    {
+                        best[k] = best[k - 1];
+                        S.nbr[i][k] = S.nbr[i][k - 1];
+                    }
+                    --k;
+                }
+                if (k < nNeighbour)
+                {
+                    best[k] = c;
+                    S.nbr[i][k] = j;
+                }
+            }
+        }
+        return S;
     }();
-    return dirs;
+    return set;
 }
 
 
@@ -187,8 +227,8 @@ depthFunction::state newtonOnSphere
 )
 {
     // Tolerances: the tangential residual x1 - x2 is a difference of
-    // lengths of size L, known to a few eps*L; a step of 1e-14 rad moves a
-    // point by < 1e-12 of the largest radius of curvature considered.
+    // lengths of size L, known to a few eps*L; a step of 1e-14 rad moves
+    // the contact points by 1e-14 of their radius of curvature
     const scalar tolG = 64*eps*L;
     const scalar tolStep = 1e-14;
     const scalar maxStep = 0.5;     // trust radius [rad]
@@ -312,16 +352,19 @@ result robustCore
     const depthFunction f(e1, e2);
     const scalar L = e1.boundingRadius() + e2.boundingRadius() + mag(f.d());
 
-    // Candidate starts: the sampled directions, the centre line, the guess
-    const std::array<vector, nSample>& dirs = sampleDirections();
+    // Candidate starts: the caller's guess, the centre line and the local
+    // minima of g over the sampled directions (lowest first): g can have
+    // several local minima for deep overlaps of elongated bodies, and
+    // Newton finds the one of the basin it starts in
+    const sampleSet& S = samples();
     scalar gSample[nSample];
     for (label i = 0; i < nSample; ++i)
     {
-        gSample[i] = f.eval(dirs[i]).g;
+        gSample[i] = f.eval(S.dir[i]).g;
     }
 
-    const label maxStarts = 5;
-    vector starts[maxStarts];
+    const label maxMinima = 6;
+    vector starts[maxMinima + 2];
     label nStarts = 0;
 
     if (magSqr(nGuess) > 0 && std::isfinite(magSqr(nGuess)))
@@ -333,40 +376,42 @@ result robustCore
         starts[nStarts++] = f.d()/mag(f.d());
     }
 
-    // Up to three best samples at least ~40 deg apart (distinct basins)
-    bool used[nSample] = {};
-    for (label k = 0; k < 3; ++k)
+    label minima[maxMinima];
+    label nMinima = 0;
+    for (label i = 0; i < nSample; ++i)
     {
-        label best = -1;
-        for (label i = 0; i < nSample; ++i)
+        bool isMin = true;
+        for (label k = 0; k < nNeighbour; ++k)
         {
-            if (!used[i] && (best < 0 || gSample[i] < gSample[best]))
+            if (gSample[S.nbr[i][k]] < gSample[i])
             {
-                bool farEnough = true;
-                for (label j = 0; j < nStarts; ++j)
-                {
-                    if ((dirs[i] & starts[j]) > 0.76)
-                    {
-                        farEnough = false;
-                        break;
-                    }
-                }
-                if (farEnough)
-                {
-                    best = i;
-                }
-                else
-                {
-                    used[i] = true;
-                }
+                isMin = false;
+                break;
             }
         }
-        if (best < 0)
+        if (!isMin)
         {
-            break;
+            continue;
         }
-        used[best] = true;
-        starts[nStarts++] = dirs[best];
+
+        // Keep the maxMinima lowest, sorted
+        label k = nMinima < maxMinima ? nMinima++ : maxMinima;
+        while (k > 0 && gSample[i] < gSample[minima[k - 1]])
+        {
+            if (k < maxMinima)
+            {
+                minima[k] = minima[k - 1];
+            }
+            --k;
+        }
+        if (k < maxMinima)
+        {
+            minima[k] = i;
+        }
+    }
+    for (label k = 0; k < nMinima; ++k)
+    {
+        starts[nStarts++] = S.dir[minima[k]];
     }
 
     // Refine every start, keep the lowest g (converged runs preferred)

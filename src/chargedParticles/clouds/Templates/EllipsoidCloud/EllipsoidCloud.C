@@ -4,6 +4,7 @@
 
 #include "EllipsoidCloud.H"
 #include "CollisionModel.H"
+#include "EllipsoidCollision.H"
 #include "subCycleTime.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
@@ -207,12 +208,33 @@ void Foam::EllipsoidCloud<CloudType>::info()
     reduce(nWall, sumOp<scalar>());
     reduce(nParcels, sumOp<scalar>());
 
+    // Potential energy in gravity, -m g.x
+    scalar potential = 0;
+    for (const parcelType& p : *this)
+    {
+        potential -= p.nParticle()*p.mass()*(this->g().value() & p.position());
+    }
+    reduce(potential, sumOp<scalar>());
+
     Info<< "    Rotational kinetic energy (ellipsoids) = "
         << rotationalKineticEnergyOfEllipsoids() << nl
+        << "    Potential energy (gravity)      = " << potential << nl
         << "    Contacts: particle-particle     = " << label(nPair/2 + 0.5)
         << ", particle-wall = " << label(nWall) << nl
         << "    Coordination number             = "
         << (nParcels > 0 ? nPair/nParcels : 0) << nl;
+
+    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
+        ellipsoidCollisionType;
+    const auto* ecPtr =
+        dynamic_cast<const ellipsoidCollisionType*>(&this->collision());
+    if (ecPtr)
+    {
+        Info<< "    Contact elastic energy          = "
+            << ecPtr->elasticEnergy() << nl
+            << "    Contact dissipated energy       = "
+            << ecPtr->dissipatedEnergy() << nl;
+    }
 }
 
 

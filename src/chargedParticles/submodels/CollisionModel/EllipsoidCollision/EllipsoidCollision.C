@@ -108,6 +108,14 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
     const dictionary& dict
 )
 {
+    const scalar muR = dict.template lookupOrDefault<scalar>("rollingFriction", 0);
+    if (!(muR >= 0) || !std::isfinite(muR))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry rollingFriction = " << muR << " in "
+            << dict.name().c_str() << " is out of range: it must be >= 0"
+            << exit(FatalIOError);
+    }
     if (!(e > 0 && e <= 1))
     {
         FatalIOErrorInFunction(dict)
@@ -145,6 +153,7 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
     law.beta = dampingRatio(e);
     law.mu = mu;
     law.e = e;
+    law.muR = muR;
     return law;
 }
 
@@ -230,9 +239,12 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     const vector& vRel,
     const scalar mStar,
     const contactLaw& law,
-    vector& xi
-) const
+    vector& xi,
+    const scalar energyWeight
+)
 {
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+
     const vector& n = c.n;
     const scalar delta = c.overlap;
     const scalar R = c.reducedRadius;
@@ -244,10 +256,17 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     const scalar Sn = 2*law.Estar*sqrtRdelta;                // dF/d delta
     const scalar etaN =
         2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(Sn*mStar);
-    const scalar Fn =
-        max((4.0/3.0)*law.Estar*sqrtRdelta*delta + etaN*vn, scalar(0));
+    const scalar Fe = (4.0/3.0)*law.Estar*sqrtRdelta*delta;
+    const scalar Fn = max(Fe + etaN*vn, scalar(0));
 
     vector F = -Fn*n;
+
+    // Bookkeeping: the elastic energy changes by Fe vn dt, the contact
+    // force does -Fn vn dt of work: the difference (Fn - Fe) vn dt >= 0
+    // is dissipated (dashpot, or the released energy under the no-tension
+    // cut)
+    scalar dissipated = (Fn - Fe)*vn*dt;
+    scalar elastic = 0.4*Fe*delta;
 
     if (tangential_ == tangentialModel::coulomb)
     {
@@ -257,12 +276,12 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
         {
             F -= law.mu*Fn*vt/vtMag;
         }
+        dissipated += law.mu*Fn*vtMag*dt;
     }
     else
     {
         // Mindlin spring with history (Rasera Eqs. 7, 8, 11, 12): keep xi
         // in the current tangent plane with its length, then stretch it
-        const scalar dt = this->owner().mesh().time().deltaTValue();
         const scalar xiMag = mag(xi);
         xi -= (xi & n)*n;
         const scalar xiProjMag = mag(xi);
@@ -273,6 +292,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
         xi += vt*dt;
 
         const scalar kT = 8*law.Gstar*sqrtRdelta;
+        const scalar springBefore = 0.5*kT*magSqr(xi - vt*dt);
         const scalar etaT =
             2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(kT*mStar);
         vector Ft = -kT*xi - etaT*vt;
@@ -284,9 +304,47 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
             xi = kT > VSMALL ? -Ft/kT : vector(Zero);
         }
         F += Ft;
+
+        // Bookkeeping: the work taken from the relative motion, -Ft.vt dt,
+        // goes into the spring or is dissipated (dashpot, slip)
+        const scalar springAfter = 0.5*kT*magSqr(xi);
+        dissipated += -(Ft & vt)*dt - (springAfter - springBefore);
+        elastic += springAfter;
     }
 
+    dissipatedEnergy_ += energyWeight*dissipated;
+    elasticEnergy_ += energyWeight*elastic;
+
     return F;
+}
+
+
+template<class CloudType>
+Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
+(
+    const ellipsoidContact::result& c,
+    const vector& F,
+    const vector& w,
+    const scalar Ieff,
+    const contactLaw& law,
+    const scalar energyWeight
+)
+{
+    const scalar wMag = mag(w);
+    if (law.muR <= 0 || wMag < VSMALL)
+    {
+        return Zero;
+    }
+
+    // Ai et al. (2011) model A, limited so that w is not reversed: a
+    // half kick dt/2 M/I must not exceed |w| (both kicks of a step)
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const scalar Fn = mag(F & c.n);
+    const scalar Mmag = min(law.muR*c.reducedRadius*Fn, Ieff*wMag/dt);
+
+    dissipatedEnergy_ += energyWeight*Mmag*wMag*dt;
+
+    return -Mmag*w/wMag;
 }
 
 
@@ -301,6 +359,7 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     nPairContacts_ = 0;
     nWallContacts_ = 0;
     nBufferWarnings_ = 0;
+    elasticEnergy_ = 0;
     maxRelOverlap_ = 0;
     nUnconverged_ = 0;
 }
@@ -310,7 +369,8 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::evaluatePair
 (
     parcelType& pA,
-    parcelType& pB
+    parcelType& pB,
+    const scalar energyWeight
 )
 {
     // Bounding spheres of the collision shells
@@ -368,7 +428,7 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
             pA.origId()
         ).collisionData();
 
-    const vector F = contactForce(c, vRel, mStar, pp_, xiAB);
+    const vector F = contactForce(c, vRel, mStar, pp_, xiAB, energyWeight);
     xiBA = -xiAB;
 
     checkBufferLayer
@@ -383,11 +443,17 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
         c.reducedRadius
     );
 
+    // Rolling friction, limited by the smaller rotational inertia
+    const vector w = pA.omega() - pB.omega();
+    const scalar Ieff =
+        min(cmptMin(pA.principalMoments()), cmptMin(pB.principalMoments()));
+    const vector Mr = rollingTorque(c, F, w, Ieff, pp_, energyWeight);
+
     // Forces and torques about the centroids (Ruan Eq. 40)
     pA.f() += F;
     pB.f() -= F;
-    pA.torque() += (xc - pA.position()) ^ F;
-    pB.torque() -= (xc - pB.position()) ^ F;
+    pA.torque() += ((xc - pA.position()) ^ F) + Mr;
+    pB.torque() -= ((xc - pB.position()) ^ F) + Mr;
 }
 
 
@@ -438,9 +504,11 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
         {
             for (const label realCelli : ril[refCelli])
             {
+                // Also evaluated on the referred parcel's processor: half
+                // of the energy here
                 for (parcelType* pPtr : cellOccupancy[realCelli])
                 {
-                    evaluatePair(*pPtr, referred);
+                    evaluatePair(*pPtr, referred, 0.5);
                 }
             }
         }
@@ -521,13 +589,17 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     ).collisionData();
 
                 const vector F = contactForce(c, vRel, p.mass(), pw_, xi);
+                const vector Mr = rollingTorque
+                (
+                    c, F, p.omega(), cmptMin(p.principalMoments()), pw_
+                );
                 checkBufferLayer
                 (
                     p, "a wall", c.overlap, bufferLayer(p),
                     vRel & c.n, p.mass(), c.reducedRadius
                 );
                 p.f() += F;
-                p.torque() += (xc - p.position()) ^ F;
+                p.torque() += ((xc - p.position()) ^ F) + Mr;
             };
 
             for (const label facei : directWallFaces[realCelli])
@@ -597,6 +669,8 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     ),
     nBufferWarnings_(0),
     nBufferWarningsTotal_(0),
+    dissipatedEnergy_(0),
+    elasticEnergy_(0),
     resolutionSteps_
     (
         this->coeffDict().template lookupOrDefault<label>
