@@ -501,7 +501,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("-quick", action="store_true", help="small N (see CONFIGS)")
     ap.add_argument("-runs", default=os.path.join(HERE, "runs"), help="case directory root")
-    ap.add_argument("-doc", default=DOC, help="markdown file for the results")
+    ap.add_argument("-doc", default=None,
+                    help=f"markdown file for the results (default: {os.path.relpath(DOC, ROOT)}; "
+                         "with -quick only when given)")
     ap.add_argument("-no-doc", action="store_true", help="do not write the markdown file")
     ap.add_argument("-only", default="", help="comma-separated codes (default: all)")
     ap.add_argument("-cells", default="",
@@ -514,6 +516,10 @@ def main():
     args = ap.parse_args()
 
     mode = "quick" if args.quick else "full"
+    if args.doc is None and not args.quick:
+        args.doc = DOC
+    if args.doc is None:
+        args.no_doc = True
     cfg = CONFIGS[mode]
     runs = os.path.join(os.path.abspath(args.runs), mode)
     resfile = os.path.join(runs, "results.json")
@@ -532,7 +538,7 @@ def main():
         print(tables(res))
         if not args.no_doc and res.get("complete"):
             import report
-            report.write_doc(args.doc, res, tables(res), quick=args.quick)
+            report.write_doc(args.doc, res, tables(res), quick=args.quick, regenerated=True)
             print(f"wrote {args.doc}")
         return 0
 

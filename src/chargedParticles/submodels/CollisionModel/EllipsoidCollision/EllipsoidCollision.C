@@ -171,10 +171,11 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::bufferLayer
 template<class CloudType>
 Foam::ellipsoid Foam::EllipsoidCollision<CloudType>::shell
 (
-    const parcelType& p
+    const parcelType& p,
+    const point& x
 ) const
 {
-    const ellipsoid body(p.semiAxes(), p.position(), p.orientation());
+    const ellipsoid body(p.semiAxes(), x, p.orientation());
     const scalar dBl = bufferLayer(p);
     return dBl > 0 ? body.inflated(dBl) : body;
 }
@@ -184,7 +185,7 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 (
     const parcelType& pA,
-    const word& other,
+    const parcelType* pB,
     const scalar overlap,
     const scalar twoDeltaBl,
     const scalar vn,
@@ -211,7 +212,12 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 
     WarningInFunction
         << "Contact of parcel (origProc " << pA.origProc() << ", origId "
-        << pA.origId() << ") with " << other.c_str() << ": overlap "
+        << pA.origId() << ") with "
+        << (pB
+            ? "parcel (origProc " + Foam::name(pB->origProc()) + ", origId "
+            + Foam::name(pB->origId()) + ")"
+            : word("a wall")).c_str()
+        << ": overlap "
         << overlap << " m = " << overlap/twoDeltaBl
         << " of the two buffer layers (2 deltaBl = " << twoDeltaBl
         << " m; Ruan keeps it below 0.08). Eq. (52) asks for E > " << Emin
@@ -225,10 +231,11 @@ template<class CloudType>
 Foam::vector Foam::EllipsoidCollision<CloudType>::pointVelocity
 (
     const parcelType& p,
+    const point& xp,
     const point& x
 )
 {
-    return p.U() + (p.omega() ^ (x - p.position()));
+    return p.U() + (p.omega() ^ (x - xp));
 }
 
 
@@ -369,20 +376,22 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::evaluatePair
 (
     parcelType& pA,
+    const point& xA,
     parcelType& pB,
+    const point& xB,
     const scalar energyWeight
 )
 {
     // Bounding spheres of the collision shells
     const scalar rA = cmptMax(pA.semiAxes()) + bufferLayer(pA);
     const scalar rB = cmptMax(pB.semiAxes()) + bufferLayer(pB);
-    if (magSqr(pA.position() - pB.position()) > sqr(rA + rB))
+    if (magSqr(xA - xB) > sqr(rA + rB))
     {
         return;
     }
 
-    const ellipsoid eA(shell(pA));
-    const ellipsoid eB(shell(pB));
+    const ellipsoid eA(shell(pA, xA));
+    const ellipsoid eB(shell(pB, xB));
 
     // Two spheres always take the analytic fast path
     const ellipsoidContact::result c = ellipsoidContact::contact
@@ -412,7 +421,7 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     // Contact point: the midpoint (exact angular momentum balance)
     const point xc = 0.5*(c.x1 + c.x2);
-    const vector vRel = pointVelocity(pA, xc) - pointVelocity(pB, xc);
+    const vector vRel = pointVelocity(pA, xA, xc) - pointVelocity(pB, xB, xc);
     const scalar mStar = pA.mass()*pB.mass()/(pA.mass() + pB.mass());
 
     vector& xiAB =
@@ -434,8 +443,7 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     checkBufferLayer
     (
         pA,
-        "parcel (origProc " + Foam::name(pB.origProc()) + ", origId "
-      + Foam::name(pB.origId()) + ")",
+        &pB,
         c.overlap,
         bufferLayer(pA) + bufferLayer(pB),
         vRel & c.n,
@@ -452,8 +460,8 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     // Forces and torques about the centroids (Ruan Eq. 40)
     pA.f() += F;
     pB.f() -= F;
-    pA.torque() += ((xc - pA.position()) ^ F) + Mr;
-    pB.torque() -= ((xc - pB.position()) ^ F) + Mr;
+    pA.torque() += ((xc - xA) ^ F) + Mr;
+    pB.torque() -= ((xc - xB) ^ F) + Mr;
 }
 
 
@@ -464,26 +472,41 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
     List<DynamicList<parcelType*>>& cellOccupancy =
         this->owner().cellOccupancy();
 
+    // Positions of the parcels of every cell, once
+    List<pointField> cellPositions(cellOccupancy.size());
+    forAll(cellOccupancy, celli)
+    {
+        const DynamicList<parcelType*>& cell = cellOccupancy[celli];
+        cellPositions[celli].setSize(cell.size());
+        forAll(cell, k)
+        {
+            cellPositions[celli][k] = cell[k]->position();
+        }
+    }
+
     forAll(dil, realCelli)
     {
         const DynamicList<parcelType*>& cellA = cellOccupancy[realCelli];
+        const pointField& xCellA = cellPositions[realCelli];
         forAll(cellA, a)
         {
             parcelType& pA = *cellA[a];
+            const point& xA = xCellA[a];
 
             // Parcels of the interacting cells
             for (const label cellBi : dil[realCelli])
             {
-                for (parcelType* pBPtr : cellOccupancy[cellBi])
+                const DynamicList<parcelType*>& cellB = cellOccupancy[cellBi];
+                forAll(cellB, b)
                 {
-                    evaluatePair(pA, *pBPtr);
+                    evaluatePair(pA, xA, *cellB[b], cellPositions[cellBi][b]);
                 }
             }
 
             // The other parcels of this cell, each pair once
             for (label b = a + 1; b < cellA.size(); ++b)
             {
-                evaluatePair(pA, *cellA[b]);
+                evaluatePair(pA, xA, *cellA[b], xCellA[b]);
             }
         }
     }
@@ -502,13 +525,14 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
     {
         for (parcelType& referred : referredParticles[refCelli])
         {
+            const point xR = referred.position();
             for (const label realCelli : ril[refCelli])
             {
                 // Also evaluated on the referred parcel's processor: half
                 // of the energy here
                 for (parcelType* pPtr : cellOccupancy[realCelli])
                 {
-                    evaluatePair(*pPtr, referred, 0.5);
+                    evaluatePair(*pPtr, pPtr->position(), referred, xR, 0.5);
                 }
             }
         }
@@ -534,14 +558,15 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         for (parcelType* pPtr : cellOccupancy[realCelli])
         {
             parcelType& p = *pPtr;
-            const ellipsoid e(shell(p));
+            const point xp = p.position();
+            const ellipsoid e(shell(p, xp));
             const scalar r = cmptMax(p.semiAxes()) + bufferLayer(p);
             contactPoints.clear();
 
             // face points, unit normal out of the domain, centre
             auto wallFace = [&](const face& f, const pointField& pts)
             {
-                const pointHit nearest = f.nearestPoint(p.position(), pts);
+                const pointHit nearest = f.nearestPoint(xp, pts);
                 if (nearest.distance() >= r)
                 {
                     return;
@@ -580,11 +605,11 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     max(maxRelOverlap_, c.overlap/cmptMin(p.semiAxes()));
 
                 const point xc = 0.5*(c.x1 + c.x2);
-                const vector vRel = pointVelocity(p, xc);
+                const vector vRel = pointVelocity(p, xp, xc);
                 vector& xi =
                     p.collisionRecords().matchWallRecord
                     (
-                        xc - p.position(),
+                        xc - xp,
                         r
                     ).collisionData();
 
@@ -595,11 +620,11 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 );
                 checkBufferLayer
                 (
-                    p, "a wall", c.overlap, bufferLayer(p),
+                    p, nullptr, c.overlap, bufferLayer(p),
                     vRel & c.n, p.mass(), c.reducedRadius
                 );
                 p.f() += F;
-                p.torque() += ((xc - p.position()) ^ F) + Mr;
+                p.torque() += ((xc - xp) ^ F) + Mr;
             };
 
             for (const label facei : directWallFaces[realCelli])
