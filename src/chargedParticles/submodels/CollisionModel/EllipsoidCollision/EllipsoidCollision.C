@@ -363,11 +363,8 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
         p.f() = Zero;
         p.torque() = Zero;
     }
-    nPairContacts_ = 0;
-    nWallContacts_ = 0;
     nBufferWarnings_ = 0;
     elasticEnergy_ = 0;
-    maxRelOverlap_ = 0;
     nUnconverged_ = 0;
 }
 
@@ -408,16 +405,10 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
         return;
     }
 
-    ++nPairContacts_;
     if (!c.converged)
     {
         ++nUnconverged_;
     }
-    maxRelOverlap_ = max
-    (
-        maxRelOverlap_,
-        c.overlap/min(cmptMin(pA.semiAxes()), cmptMin(pB.semiAxes()))
-    );
 
     // Contact point: the midpoint (exact angular momentum balance)
     const point xc = 0.5*(c.x1 + c.x2);
@@ -600,10 +591,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 }
                 contactPoints.append(c.x2);
 
-                ++nWallContacts_;
-                maxRelOverlap_ =
-                    max(maxRelOverlap_, c.overlap/cmptMin(p.semiAxes()));
-
                 const point xc = 0.5*(c.x1 + c.x2);
                 const vector vRel = pointVelocity(p, xp, xc);
                 vector& xi =
@@ -712,9 +699,6 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         false,
         this->coeffDict().template lookupOrDefault<word>("U", "U.carrier")
     ),
-    nPairContacts_(0),
-    nWallContacts_(0),
-    maxRelOverlap_(0),
     nUnconverged_(0),
     particleE_(0),
     particleNu_(0)
