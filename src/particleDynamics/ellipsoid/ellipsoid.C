@@ -5,6 +5,9 @@
 #include "ellipsoid.H"
 #include "error.H"
 #include "Ostream.H"
+#include "mathematicalConstants.H"
+#include <algorithm>
+#include <tr1/cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -162,6 +165,42 @@ Foam::ellipsoid::ellipsoid(const scalar radius, const point& centre)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::ellipsoid::surfaceArea(const vector& semiAxes)
+{
+    // a >= b >= c; S = 2 pi c^2 + 2 pi a b/sin(phi) (E(phi, k) sin^2 phi
+    // + F(phi, k) cos^2 phi), cos phi = c/a, k^2 = a^2 (b^2 - c^2)/(b^2
+    // (a^2 - c^2)) (Legendre; DLMF 19.33.2). Elliptic integrals from
+    // libstdc++'s TR1 special functions (C++11 has no std:: ones)
+    scalar s[3] = {semiAxes.x(), semiAxes.y(), semiAxes.z()};
+    std::sort(s, s + 3);
+    const scalar a = s[2], b = s[1], c = s[0];
+    const scalar pi = constant::mathematical::pi;
+
+    if (!(c > 0))
+    {
+        FatalErrorInFunction
+            << "Semi-axes " << semiAxes << " must be > 0" << exit(FatalError);
+    }
+    if (a - c <= 1e-12*a)
+    {
+        return 4*pi*sqr(a);
+    }
+
+    const scalar cosPhi = c/a;
+    const scalar sinPhi = Foam::sqrt(1 - sqr(cosPhi));
+    const scalar phi = std::acos(cosPhi);
+    const scalar k =
+        min(scalar(1), Foam::sqrt(sqr(a)*(sqr(b) - sqr(c))/(sqr(b)*(sqr(a) - sqr(c)))));
+
+    const scalar E = std::tr1::ellint_2(k, phi);
+    const scalar F = std::tr1::ellint_1(k, phi);
+
+    return
+        2*pi*sqr(c)
+      + 2*pi*a*b/sinPhi*(E*sqr(sinPhi) + F*sqr(cosPhi));
+}
+
 
 Foam::ellipsoid Foam::ellipsoid::inflated(const scalar deltaBl) const
 {

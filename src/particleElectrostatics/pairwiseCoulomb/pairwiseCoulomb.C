@@ -70,6 +70,82 @@ Foam::vector Foam::pairwiseCoulomb::pairForce
 }
 
 
+Foam::vector Foam::pairwiseCoulomb::pairField
+(
+    const point& xi,
+    const point& xj,
+    const scalar qj
+) const
+{
+    const vector rij = xi - xj;
+    const scalar r2 = magSqr(rij);
+    if (r2 == 0)
+    {
+        coincident(0, 1, xi);
+    }
+    return force(rij, r2, qj);
+}
+
+
+void Foam::pairwiseCoulomb::addFields
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    UList<vector>& E
+) const
+{
+    const label n = x.size();
+    for (label i = 0; i < n; ++i)
+    {
+        const point& xi = x[i];
+        const scalar qi = q[i];
+        vector Ei(Zero);
+
+        for (label j = i + 1; j < n; ++j)
+        {
+            const vector rij = xi - x[j];
+            const scalar r2 = magSqr(rij);
+            if (r2 == 0)
+            {
+                coincident(i, j, xi);
+            }
+            // k r/r^3 once for both ends of the pair
+            const vector g = force(rij, r2, 1);
+            Ei += q[j]*g;
+            E[j] -= qi*g;
+        }
+        E[i] += Ei;
+    }
+}
+
+
+void Foam::pairwiseCoulomb::addFields
+(
+    const UList<point>& xT,
+    const UList<point>& xS,
+    const UList<scalar>& qS,
+    UList<vector>& ET
+) const
+{
+    forAll(xT, i)
+    {
+        const point& xi = xT[i];
+        vector Ei(Zero);
+        forAll(xS, j)
+        {
+            const vector rij = xi - xS[j];
+            const scalar r2 = magSqr(rij);
+            if (r2 == 0)
+            {
+                coincident(i, j, xi);
+            }
+            Ei += force(rij, r2, qS[j]);
+        }
+        ET[i] += Ei;
+    }
+}
+
+
 void Foam::pairwiseCoulomb::addForces
 (
     const UList<point>& x,

@@ -1118,3 +1118,53 @@ int main(int argc, char** argv)
 
 
 // ************************************************************************* //
+
+
+TEST(ellipsoid, SurfaceAreaAgainstClosedFormsAndQuadrature)
+{
+    const scalar pi = constant::mathematical::pi;
+
+    // Sphere
+    EXPECT_NEAR(ellipsoid::surfaceArea(vector(2, 2, 2))/(16*pi), 1, 1e-14);
+
+    // Prolate spheroid a > b = c: 2 pi b^2 (1 + a/(b e) asin e)
+    {
+        const scalar a = 3, b = 1, e = Foam::sqrt(1 - sqr(b/a));
+        const scalar S = 2*pi*sqr(b)*(1 + a/(b*e)*std::asin(e));
+        EXPECT_NEAR(ellipsoid::surfaceArea(vector(b, a, b))/S, 1, 1e-12);
+    }
+
+    // Oblate spheroid a = b > c: 2 pi a^2 (1 + (1 - e^2)/e atanh e)
+    {
+        const scalar a = 2, c = 0.5, e = Foam::sqrt(1 - sqr(c/a));
+        const scalar S = 2*pi*sqr(a)*(1 + (1 - sqr(e))/e*std::atanh(e));
+        EXPECT_NEAR(ellipsoid::surfaceArea(vector(a, c, a))/S, 1, 1e-12);
+    }
+
+    // Triaxial: midpoint quadrature of |x_u ^ x_v| over the parametric
+    // surface x = (a sin u cos v, b sin u sin v, c cos u)
+    {
+        const scalar a = 3, b = 2, c = 1;
+        const label n = 2000;
+        scalar S = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar u = pi*(i + 0.5)/n;
+            for (label j = 0; j < 2*n; ++j)
+            {
+                const scalar v = pi*(j + 0.5)/n;
+                const vector xu
+                (
+                    a*std::cos(u)*std::cos(v), b*std::cos(u)*std::sin(v), -c*std::sin(u)
+                );
+                const vector xv
+                (
+                    -a*std::sin(u)*std::sin(v), b*std::sin(u)*std::cos(v), 0
+                );
+                S += mag(xu ^ xv);
+            }
+        }
+        S *= sqr(pi/n);
+        EXPECT_NEAR(ellipsoid::surfaceArea(vector(c, a, b))/S, 1, 1e-6);
+    }
+}

@@ -187,6 +187,45 @@ TEST(pairwiseCoulomb, SplitTargetsAndSourcesEqualFullSum)
 }
 
 
+TEST(pairwiseCoulomb, FieldTimesChargeIsForceAlsoSplit)
+{
+    // E_i = F_i/q_i for charged particles; a neutral particle still
+    // feels the field of the others (hand sum for particle 0)
+    const pairwiseCoulomb coulomb;
+    pointField x;
+    scalarField q;
+    randomCloud(40, x, q, 7);
+    q[0] = 0;
+    vectorField f(x.size(), Zero), E(x.size(), Zero);
+    coulomb.addForces(x, q, f);
+    coulomb.addFields(x, q, E);
+    for (label i = 1; i < x.size(); ++i)
+    {
+        EXPECT_LT(mag(q[i]*E[i] - f[i]), 1e-12*maxMag(f));
+    }
+    vector E0(Zero);
+    for (label j = 1; j < x.size(); ++j)
+    {
+        const vector r = x[0] - x[j];
+        E0 += kCODATA*q[j]*r/pow3(mag(r));
+        EXPECT_LT(mag(coulomb.pairField(x[0], x[j], q[j]) - kCODATA*q[j]*r/pow3(mag(r))), 1e-9*mag(kCODATA*q[j]*r/pow3(mag(r))));
+    }
+    EXPECT_LT(mag(E[0] - E0), 1e-9*mag(E0));
+
+    // Targets/sources split = full sum
+    const label nA = 15;
+    const pointField xA(SubList<point>(x, nA)), xB(SubList<point>(x, x.size() - nA, nA));
+    const scalarField qA(SubList<scalar>(q, nA)), qB(SubList<scalar>(q, q.size() - nA, nA));
+    vectorField EA(nA, Zero);
+    coulomb.addFields(xA, qA, EA);
+    coulomb.addFields(xA, xB, qB, EA);
+    for (label i = 0; i < nA; ++i)
+    {
+        EXPECT_LT(mag(EA[i] - E[i]), 1e-12*mag(E[i]));
+    }
+}
+
+
 TEST(pairwiseCoulomb, ForceIsMinusEnergyGradient)
 {
     const pairwiseCoulomb coulomb;

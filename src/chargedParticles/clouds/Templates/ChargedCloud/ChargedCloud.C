@@ -4,6 +4,8 @@
 
 #include "ChargedCloud.H"
 #include "ElectrostaticsModel.H"
+#include "TriboChargingModel.H"
+#include "EllipsoidCollision.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -18,6 +20,32 @@ void Foam::ChargedCloud<CloudType>::setModels()
             *this
         ).ptr()
     );
+
+    triboChargingModel_.reset
+    (
+        TriboChargingModel<ChargedCloud<CloudType>>::New
+        (
+            this->subModelProperties(),
+            *this
+        ).ptr()
+    );
+
+    // Contact charging acts on the contacts the collision model lists
+    if (triboCharging().active())
+    {
+        collisionModelType* ec =
+            dynamic_cast<collisionModelType*>(&this->collision());
+        if (!ec)
+        {
+            FatalIOErrorInFunction(this->subModelProperties())
+                << "Entry triboChargingModel "
+                << triboCharging().modelType()
+                << " needs collisionModel "
+                << collisionModelType::typeName << ", not "
+                << this->collision().type() << exit(FatalIOError);
+        }
+        ec->recordContacts();
+    }
 }
 
 
@@ -45,6 +73,7 @@ void Foam::ChargedCloud<CloudType>::cloudReset(ChargedCloud<CloudType>& c)
 {
     CloudType::cloudReset(c);
     electrostaticsModel_.reset(c.electrostaticsModel_.ptr());
+    triboChargingModel_.reset(c.triboChargingModel_.ptr());
     forcesStale_ = true;
 }
 
@@ -65,6 +94,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     CloudType(cloudName, rho, U, mu, g, false),
     constProps_(this->particleProperties()),
     electrostaticsModel_(nullptr),
+    triboChargingModel_(nullptr),
     forcesStale_(true)
 {
     if (this->solution().active())
@@ -97,6 +127,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     CloudType(c, name),
     constProps_(c.constProps_),
     electrostaticsModel_(c.electrostaticsModel_->clone()),
+    triboChargingModel_(c.triboChargingModel_->clone()),
     forcesStale_(c.forcesStale_)
 {}
 
@@ -112,6 +143,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     CloudType(mesh, name, c),
     constProps_(c.constProps_),
     electrostaticsModel_(nullptr),
+    triboChargingModel_(nullptr),
     forcesStale_(true)
 {}
 
@@ -178,6 +210,11 @@ void Foam::ChargedCloud<CloudType>::evolve()
         td.part() = parcelType::trackingData::tpVelocityHalfStep;
 
         this->solve(*this, td);
+
+        if (triboCharging().active())
+        {
+            triboCharging().writeBalance();
+        }
     }
 }
 
@@ -200,6 +237,15 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
 {
     CloudType::calculateForces();
 
+    // Charge moved by the contacts just found, before the electrostatic
+    // forces of the new charges
+    if (triboCharging().active())
+    {
+        const collisionModelType& ec =
+            static_cast<const collisionModelType&>(this->collision());
+        triboCharging().transfer(ec.contacts());
+    }
+
     if (electrostatics().active())
     {
         electrostatics().calculate();
@@ -214,6 +260,20 @@ void Foam::ChargedCloud<CloudType>::info()
     CloudType::info();
 
     Info<< "    Total charge                    = " << totalCharge() << nl;
+
+    if (triboCharging().active())
+    {
+        const scalarField qWalls(triboCharging().wallCharge());
+        const polyBoundaryMesh& patches = this->mesh().boundaryMesh();
+        forAll(qWalls, patchi)
+        {
+            if (qWalls[patchi] != 0)
+            {
+                Info<< "    Charge into wall " << patches[patchi].name()
+                    << " = " << qWalls[patchi] << nl;
+            }
+        }
+    }
 
     if (electrostatics().active())
     {

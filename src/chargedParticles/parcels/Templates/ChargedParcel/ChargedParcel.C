@@ -12,7 +12,9 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel(const ChargedParcel<ParcelType>& 
 :
     ParcelType(p),
     q_(p.q_),
-    fE_(p.fE_)
+    fE_(p.fE_),
+    E_(p.E_),
+    chargingRecords_(p.chargingRecords_)
 {}
 
 
@@ -25,7 +27,9 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 :
     ParcelType(p, mesh),
     q_(p.q_),
-    fE_(p.fE_)
+    fE_(p.fE_),
+    E_(p.E_),
+    chargingRecords_(p.chargingRecords_)
 {}
 
 
@@ -56,6 +60,7 @@ void Foam::ChargedParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
     fE_ = transform(T, fE_);
+    E_ = transform(T, E_);
 }
 
 

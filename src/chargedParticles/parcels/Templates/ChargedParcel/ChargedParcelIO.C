@@ -4,6 +4,9 @@
 
 #include "ChargedParcel.H"
 #include "IOstreams.H"
+#include "labelFieldIOField.H"
+#include "scalarFieldIOField.H"
+#include "vectorFieldIOField.H"
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
@@ -14,7 +17,7 @@ Foam::string Foam::ChargedParcel<ParcelType>::propertyList_ =
 template<class ParcelType>
 const std::size_t Foam::ChargedParcel<ParcelType>::sizeofFields
 (
-    offsetof(ChargedParcel<ParcelType>, fE_) + sizeof(vector)
+    offsetof(ChargedParcel<ParcelType>, E_) + sizeof(vector)
   - offsetof(ChargedParcel<ParcelType>, q_)
 );
 
@@ -32,13 +35,15 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 :
     ParcelType(mesh, is, readFields, newFormat),
     q_(0),
-    fE_(Zero)
+    fE_(Zero),
+    E_(Zero),
+    chargingRecords_()
 {
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> q_ >> fE_;
+            is >> q_ >> fE_ >> E_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
@@ -46,12 +51,15 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
             is.beginRawRead();
             readRawScalar(is, &q_);
             readRawScalar(is, fE_.data(), vector::nComponents);
+            readRawScalar(is, E_.data(), vector::nComponents);
             is.endRawRead();
         }
         else
         {
             is.read(reinterpret_cast<char*>(&q_), sizeofFields);
         }
+
+        is >> chargingRecords_;
     }
 
     is.check(FUNCTION_NAME);
@@ -72,11 +80,72 @@ void Foam::ChargedParcel<ParcelType>::readFields(CloudType& c)
     IOField<vector> fE(c.fieldIOobject("fE", IOobject::MUST_READ), valid);
     c.checkFieldIOobject(c, fE);
 
+    // Optional (cases written before they existed): E is recomputed by
+    // the electrostatics before it is used; no charging history means
+    // every current contact counts from zero area
+    IOField<vector> E(c.fieldIOobject("E", IOobject::READ_IF_PRESENT));
+    const bool haveE = E.size() == c.size();
+
+    const word rec("chargingRecords");
+    labelFieldCompactIOField pairAccessed
+    (
+        c.fieldIOobject(rec + "PairAccessed", IOobject::READ_IF_PRESENT)
+    );
+    labelFieldCompactIOField pairOrigProc
+    (
+        c.fieldIOobject(rec + "PairOrigProcOfOther", IOobject::READ_IF_PRESENT)
+    );
+    labelFieldCompactIOField pairOrigId
+    (
+        c.fieldIOobject(rec + "PairOrigIdOfOther", IOobject::READ_IF_PRESENT)
+    );
+    scalarFieldCompactIOField pairData
+    (
+        c.fieldIOobject(rec + "PairData", IOobject::READ_IF_PRESENT)
+    );
+    labelFieldCompactIOField wallAccessed
+    (
+        c.fieldIOobject(rec + "WallAccessed", IOobject::READ_IF_PRESENT)
+    );
+    vectorFieldCompactIOField wallPRel
+    (
+        c.fieldIOobject(rec + "WallPRel", IOobject::READ_IF_PRESENT)
+    );
+    scalarFieldCompactIOField wallData
+    (
+        c.fieldIOobject(rec + "WallData", IOobject::READ_IF_PRESENT)
+    );
+    const bool haveRecords =
+        pairAccessed.size() == c.size()
+     && pairOrigProc.size() == c.size()
+     && pairOrigId.size() == c.size()
+     && pairData.size() == c.size()
+     && wallAccessed.size() == c.size()
+     && wallPRel.size() == c.size()
+     && wallData.size() == c.size();
+
     label i = 0;
     for (ChargedParcel<ParcelType>& p : c)
     {
         p.q_ = q[i];
         p.fE_ = fE[i];
+        if (haveE)
+        {
+            p.E_ = E[i];
+        }
+        if (haveRecords)
+        {
+            p.chargingRecords_ = chargingRecordList
+            (
+                pairAccessed[i],
+                pairOrigProc[i],
+                pairOrigId[i],
+                pairData[i],
+                wallAccessed[i],
+                wallPRel[i],
+                wallData[i]
+            );
+        }
         ++i;
     }
 }
@@ -93,17 +162,65 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
 
     IOField<scalar> q(c.fieldIOobject("q", IOobject::NO_READ), np);
     IOField<vector> fE(c.fieldIOobject("fE", IOobject::NO_READ), np);
+    IOField<vector> E(c.fieldIOobject("E", IOobject::NO_READ), np);
+
+    const word rec("chargingRecords");
+    labelFieldCompactIOField pairAccessed
+    (
+        c.fieldIOobject(rec + "PairAccessed", IOobject::NO_READ), np
+    );
+    labelFieldCompactIOField pairOrigProc
+    (
+        c.fieldIOobject(rec + "PairOrigProcOfOther", IOobject::NO_READ), np
+    );
+    labelFieldCompactIOField pairOrigId
+    (
+        c.fieldIOobject(rec + "PairOrigIdOfOther", IOobject::NO_READ), np
+    );
+    scalarFieldCompactIOField pairData
+    (
+        c.fieldIOobject(rec + "PairData", IOobject::NO_READ), np
+    );
+    labelFieldCompactIOField wallAccessed
+    (
+        c.fieldIOobject(rec + "WallAccessed", IOobject::NO_READ), np
+    );
+    vectorFieldCompactIOField wallPRel
+    (
+        c.fieldIOobject(rec + "WallPRel", IOobject::NO_READ), np
+    );
+    scalarFieldCompactIOField wallData
+    (
+        c.fieldIOobject(rec + "WallData", IOobject::NO_READ), np
+    );
 
     label i = 0;
     for (const ChargedParcel<ParcelType>& p : c)
     {
         q[i] = p.q();
         fE[i] = p.fE();
+        E[i] = p.E();
+        const chargingRecordList& r = p.chargingRecords();
+        pairAccessed[i] = r.pairAccessed();
+        pairOrigProc[i] = r.pairOrigProcOfOther();
+        pairOrigId[i] = r.pairOrigIdOfOther();
+        pairData[i] = r.pairData();
+        wallAccessed[i] = r.wallAccessed();
+        wallPRel[i] = r.wallPRel();
+        wallData[i] = r.wallData();
         ++i;
     }
 
     q.write(valid);
     fE.write(valid);
+    E.write(valid);
+    pairAccessed.write(valid);
+    pairOrigProc.write(valid);
+    pairOrigId.write(valid);
+    pairData.write(valid);
+    wallAccessed.write(valid);
+    wallPRel.write(valid);
+    wallData.write(valid);
 }
 
 
@@ -124,6 +241,7 @@ void Foam::ChargedParcel<ParcelType>::writeProperties
 
     writeProp("q", q_);
     writeProp("fE", fE_);
+    writeProp("E", E_);
 
     #undef writeProp
 }
@@ -143,12 +261,14 @@ void Foam::ChargedParcel<ParcelType>::readObjects
 
     const auto& q = cloud::lookupIOField<scalar>("q", obr);
     const auto& fE = cloud::lookupIOField<vector>("fE", obr);
+    const auto& E = cloud::lookupIOField<vector>("E", obr);
 
     label i = 0;
     for (ChargedParcel<ParcelType>& p : c)
     {
         p.q_ = q[i];
         p.fE_ = fE[i];
+        p.E_ = E[i];
         ++i;
     }
 }
@@ -168,12 +288,14 @@ void Foam::ChargedParcel<ParcelType>::writeObjects
 
     auto& q = cloud::createIOField<scalar>("q", np, obr);
     auto& fE = cloud::createIOField<vector>("fE", np, obr);
+    auto& E = cloud::createIOField<vector>("E", np, obr);
 
     label i = 0;
     for (const ChargedParcel<ParcelType>& p : c)
     {
         q[i] = p.q();
         fE[i] = p.fE();
+        E[i] = p.E();
         ++i;
     }
 }
@@ -192,7 +314,9 @@ Foam::Ostream& Foam::operator<<
     {
         os  << static_cast<const ParcelType&>(p)
             << token::SPACE << p.q()
-            << token::SPACE << p.fE();
+            << token::SPACE << p.fE()
+            << token::SPACE << p.E()
+            << token::SPACE << p.chargingRecords();
     }
     else
     {
@@ -202,6 +326,7 @@ Foam::Ostream& Foam::operator<<
             reinterpret_cast<const char*>(&p.q_),
             ChargedParcel<ParcelType>::sizeofFields
         );
+        os  << p.chargingRecords();
     }
 
     os.check(FUNCTION_NAME);

@@ -25,6 +25,8 @@ Description
 #include "NoElectrostatics.H"
 #include "DirectCoulomb.H"
 #include "EllipsoidCollision.H"
+#include "NoTriboCharging.H"
+#include "RaseraTriboCharging.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -46,6 +48,11 @@ makeParcelSurfaceFilmModels(basicChargedCloud);
 makeElectrostaticsModel(basicChargedCloud);
 makeElectrostaticsModelType(NoElectrostatics, basicChargedCloud);
 makeElectrostaticsModelType(DirectCoulomb, basicChargedCloud);
+
+makeTriboChargingModel(basicChargedCloud);
+makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);
+makeTriboChargingModelType(RaseraTriboCharging, basicChargedCloud);
+makeTriboChargingModelType(WorkFunctionTriboCharging, basicChargedCloud);
 
 
 // ************************************************************************* //

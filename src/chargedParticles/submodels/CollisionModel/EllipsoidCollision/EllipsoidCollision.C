@@ -366,6 +366,7 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     nBufferWarnings_ = 0;
     elasticEnergy_ = 0;
     nUnconverged_ = 0;
+    contacts_.clear();
 }
 
 
@@ -376,9 +377,13 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     const point& xA,
     parcelType& pB,
     const point& xB,
-    const scalar energyWeight
+    const bool referred
 )
 {
+    // A contact with a referred parcel is also evaluated on the referred
+    // parcel's processor: half of its energy is booked here
+    const scalar energyWeight = referred ? 0.5 : 1;
+
     // Bounding spheres of the collision shells
     const scalar rA = cmptMax(pA.semiAxes()) + bufferLayer(pA);
     const scalar rB = cmptMax(pB.semiAxes()) + bufferLayer(pB);
@@ -408,6 +413,11 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     if (!c.converged)
     {
         ++nUnconverged_;
+    }
+
+    if (recordContacts_)
+    {
+        contacts_.append({&pA, &pB, xA, xB, c, -1, referred});
     }
 
     // Contact point: the midpoint (exact angular momentum balance)
@@ -519,11 +529,9 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
             const point xR = referred.position();
             for (const label realCelli : ril[refCelli])
             {
-                // Also evaluated on the referred parcel's processor: half
-                // of the energy here
                 for (parcelType* pPtr : cellOccupancy[realCelli])
                 {
-                    evaluatePair(*pPtr, pPtr->position(), referred, xR, 0.5);
+                    evaluatePair(*pPtr, pPtr->position(), referred, xR, true);
                 }
             }
         }
@@ -555,7 +563,8 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             contactPoints.clear();
 
             // face points, unit normal out of the domain, centre
-            auto wallFace = [&](const face& f, const pointField& pts)
+            auto wallFace =
+                [&](const face& f, const pointField& pts, const label patchi)
             {
                 const pointHit nearest = f.nearestPoint(xp, pts);
                 if (nearest.distance() >= r)
@@ -591,6 +600,11 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 }
                 contactPoints.append(c.x2);
 
+                if (recordContacts_)
+                {
+                    contacts_.append({&p, nullptr, xp, xp, c, patchi, false});
+                }
+
                 const point xc = 0.5*(c.x1 + c.x2);
                 const vector vRel = pointVelocity(p, xp, xc);
                 vector& xi =
@@ -616,13 +630,18 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
             for (const label facei : directWallFaces[realCelli])
             {
-                wallFace(mesh.faces()[facei], mesh.points());
+                wallFace
+                (
+                    mesh.faces()[facei],
+                    mesh.points(),
+                    mesh.boundaryMesh().whichPatch(facei)
+                );
             }
 
             for (const label rwfi : il_.rwfilInverse()[realCelli])
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
-                wallFace(rwf, rwf.points());
+                wallFace(rwf, rwf.points(), rwf.patchIndex());
             }
         }
     }
@@ -700,6 +719,8 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         this->coeffDict().template lookupOrDefault<word>("U", "U.carrier")
     ),
     nUnconverged_(0),
+    recordContacts_(false),
+    contacts_(),
     particleE_(0),
     particleNu_(0)
 {

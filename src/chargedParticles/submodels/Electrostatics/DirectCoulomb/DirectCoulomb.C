@@ -170,16 +170,20 @@ void Foam::DirectCoulomb<CloudType>::calculate()
     const pointField& x = allX[me];
     const scalarField& q = allQ[me];
 
-    vectorField f(x.size(), Zero);
-    coulomb_.addForces(x, q, f);
+    // The field first (contact charging needs it, also for neutral
+    // parcels), then the force q E
+    vectorField E(x.size(), Zero);
+    coulomb_.addFields(x, q, E);
 
     forAll(allX, proci)
     {
         if (proci != me)
         {
-            coulomb_.addForces(x, q, allX[proci], allQ[proci], f);
+            coulomb_.addFields(x, allX[proci], allQ[proci], E);
         }
     }
+
+    vectorField f(q*E);
 
     if (contactCorrection_ != 0)
     {
@@ -189,7 +193,9 @@ void Foam::DirectCoulomb<CloudType>::calculate()
     label i = 0;
     for (auto& p : this->owner())
     {
-        p.fE() = f[i++];
+        p.E() = E[i];
+        p.fE() = f[i];
+        ++i;
     }
 }
 

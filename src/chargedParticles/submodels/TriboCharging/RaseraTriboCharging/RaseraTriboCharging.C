@@ -1,0 +1,371 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "RaseraTriboCharging.H"
+#include "ellipsoid.H"
+#include "wallPolyPatch.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
+{
+    const dictionary& coeffs = this->coeffDict();
+
+    // A named, finite, in-range scalar of dictionary d
+    auto get = [](const dictionary& d, const word& key, const bool positive)
+    {
+        if (!d.found(key))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry " << key << " is missing in " << d.name().c_str()
+                << exit(FatalIOError);
+        }
+        const scalar v = d.get<scalar>(key);
+        if (!std::isfinite(v) || (positive && !(v >= 0)))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry " << key << " = " << v << " in "
+                << d.name().c_str() << " is out of range: "
+                << (positive ? "it must be finite and >= 0" : "it must be finite")
+                << exit(FatalIOError);
+        }
+        return v;
+    };
+
+    scalar deltaE = 0;
+    if (fromWorkFunctions)
+    {
+        deltaE = get(coeffs, "cutoffDistance", true);
+        if (!(deltaE > 0))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Entry cutoffDistance (delta_e, Rasera Eq. 14) = "
+                << deltaE << " is out of range: it must be > 0 [m]"
+                << exit(FatalIOError);
+        }
+    }
+
+    if (!coeffs.isDict("particles"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry particles { kappaC ...; } (particle-particle charging"
+            << " efficiency, Rasera Eq. 16) is missing in "
+            << coeffs.name().c_str() << exit(FatalIOError);
+    }
+    const dictionary& particles = coeffs.subDict("particles");
+    const scalar phiP =
+        fromWorkFunctions ? get(particles, "workFunction", false) : 0;
+
+    // Like particles: Gamma = 0 (Rasera Eq. 18)
+    pp_.reset(new triboCharging(get(particles, "kappaC", true), 0));
+
+    if (!coeffs.isDict("walls"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry walls { <patch> { kappaC ...; "
+            << (fromWorkFunctions ? "workFunction" : "Gamma")
+            << " ...; } } is missing in " << coeffs.name().c_str()
+            << exit(FatalIOError);
+    }
+    const dictionary& walls = coeffs.subDict("walls");
+
+    const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
+    walls_.setSize(patches.size());
+    forAll(patches, patchi)
+    {
+        if (!isA<wallPolyPatch>(patches[patchi]))
+        {
+            continue;
+        }
+        const word& name = patches[patchi].name();
+        const dictionary* dPtr = walls.findDict(name, keyType::REGEX);
+        if (!dPtr)
+        {
+            FatalIOErrorInFunction(walls)
+                << "Wall patch " << name << " has no entry in "
+                << walls.name().c_str() << ": every wall patch needs"
+                << " { kappaC ...; "
+                << (fromWorkFunctions ? "workFunction" : "Gamma")
+                << " ...; } (a patch name or a regular expression)"
+                << exit(FatalIOError);
+        }
+        const dictionary& d = *dPtr;
+        const scalar kappaC = get(d, "kappaC", true);
+        const scalar Gamma =
+            fromWorkFunctions
+          ? triboCharging::GammaFromWorkFunctions
+            (
+                phiP*triboCharging::elementaryCharge,
+                get(d, "workFunction", false)*triboCharging::elementaryCharge,
+                deltaE
+            )
+          : get(d, "Gamma", false);
+
+        walls_.set(patchi, new triboCharging(kappaC, Gamma));
+
+        Info<< "    tribocharging on wall patch " << name
+            << ": kappa_c = " << kappaC << ", Gamma = " << Gamma << " V/m"
+            << endl;
+    }
+    Info<< "    tribocharging particle-particle: kappa_c = "
+        << pp_->kappaC() << ", Gamma = 0 (like particles)" << endl;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RaseraTriboCharging<CloudType>::surfaceField
+(
+    const parcelType& p
+)
+{
+    const vector& s = p.semiAxes();
+    const scalar S =
+        (s.x() == s.y() && s.y() == s.z())
+      ? 4*constant::mathematical::pi*sqr(s.x())
+      : ellipsoid::surfaceArea(s);
+    return p.q()/(triboCharging::eps0*S);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
+(
+    const ParcelContact<parcelType>& pc,
+    const triboCharging& law
+)
+{
+    const ellipsoidContact::result& c = pc.contact;
+    parcelType& pA = *pc.pA;
+
+    // Contact area and its growth beyond the largest so far
+    const scalar A = constant::mathematical::pi*c.reducedRadius*c.overlap;
+    const point xc = 0.5*(c.x1 + c.x2);
+    scalar& Amax =
+        pc.pB
+      ? pA.chargingRecords().matchPairRecord
+        (
+            pc.pB->origProc(),
+            pc.pB->origId()
+        ).collisionData()
+      : pA.chargingRecords().matchWallRecord
+        (
+            xc - pc.xA,
+            cmptMax(pA.semiAxes())
+        ).collisionData();
+
+    const scalar dA = A - Amax;
+    if (dA <= 0)
+    {
+        return 0;
+    }
+    Amax = A;
+
+    // Field at the contact along n (A to B), Rasera Eqs. (27)-(28)
+    scalar En = surfaceField(pA);
+    if (pc.pB)
+    {
+        const parcelType& pB = *pc.pB;
+        En -= surfaceField(pB);
+
+        // The others' field: the partner taken out, interpolated between
+        // the centroids (symmetric in A and B)
+        const auto& es = this->owner().electrostatics();
+        const vector EA = pA.E() - es.pointChargeField(pc.xA, pc.xB, pB.q());
+        const vector EB = pB.E() - es.pointChargeField(pc.xB, pc.xA, pA.q());
+        const vector AB = pc.xB - pc.xA;
+        const scalar s = min(max(((xc - pc.xA) & AB)/magSqr(AB), 0), 1);
+        En += (((1 - s)*EA + s*EB) & c.n);
+    }
+    else
+    {
+        En += (pA.E() & c.n);
+    }
+
+    return law.chargeTransfer(dA, En);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type,
+    const bool fromWorkFunctions
+)
+:
+    TriboChargingModel<CloudType>(dict, owner, type),
+    pp_(),
+    walls_(),
+    wallCharge0_(owner.mesh().boundaryMesh().size(), Zero),
+    wallChargeLocal_(owner.mesh().boundaryMesh().size(), Zero),
+    nPairCharging_(0),
+    nWallCharging_(0),
+    filePtr_(),
+    dq_()
+{
+    read(fromWorkFunctions);
+
+    // Wall charges of the run this one continues
+    scalarField q0;
+    this->getModelProperty("wallCharge", q0);
+    if (q0.size() == wallCharge0_.size())
+    {
+        wallCharge0_ = q0;
+    }
+}
+
+
+template<class CloudType>
+Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    RaseraTriboCharging<CloudType>(dict, owner, typeName, false)
+{}
+
+
+template<class CloudType>
+Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
+(
+    const RaseraTriboCharging<CloudType>& tm
+)
+:
+    TriboChargingModel<CloudType>(tm),
+    pp_(new triboCharging(tm.pp_())),
+    walls_(tm.walls_),
+    wallCharge0_(tm.wallCharge0_),
+    wallChargeLocal_(tm.wallChargeLocal_),
+    nPairCharging_(tm.nPairCharging_),
+    nWallCharging_(tm.nWallCharging_),
+    filePtr_(),
+    dq_()
+{}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::transfer
+(
+    const UList<ParcelContact<parcelType>>& contacts
+)
+{
+    // All transfers from the charges before this collide, then applied
+    dq_.setSize(contacts.size());
+    forAll(contacts, k)
+    {
+        const ParcelContact<parcelType>& c = contacts[k];
+        dq_[k] = transferOf(c, c.pB ? pp_() : walls_[c.patchi]);
+    }
+
+    forAll(contacts, k)
+    {
+        const ParcelContact<parcelType>& c = contacts[k];
+        if (dq_[k] == 0)
+        {
+            continue;
+        }
+        c.pA->q() += dq_[k];
+        if (c.pB)
+        {
+            ++nPairCharging_;
+            if (!c.referred)
+            {
+                c.pB->q() -= dq_[k];
+            }
+        }
+        else
+        {
+            ++nWallCharging_;
+            wallChargeLocal_[c.patchi] -= dq_[k];
+        }
+    }
+
+    // Forget the areas of contacts that ended
+    for (parcelType& p : this->owner())
+    {
+        p.chargingRecords().update();
+    }
+}
+
+
+template<class CloudType>
+Foam::scalarField Foam::RaseraTriboCharging<CloudType>::wallCharge() const
+{
+    scalarField q(wallChargeLocal_);
+    Pstream::listCombineGather(q, plusEqOp<scalar>());
+    Pstream::listCombineScatter(q);
+    return wallCharge0_ + q;
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::writeBalance()
+{
+    const scalarField qWalls(wallCharge());
+    const scalar qParcels = this->owner().totalCharge();
+    const label nPair = returnReduce(nPairCharging_, sumOp<label>());
+    const label nWall = returnReduce(nWallCharging_, sumOp<label>());
+    nPairCharging_ = 0;
+    nWallCharging_ = 0;
+
+    const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
+    const Time& time = this->owner().mesh().time();
+
+    if (time.writeTime())
+    {
+        this->setModelProperty("wallCharge", qWalls);
+    }
+
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    if (!filePtr_.valid())
+    {
+        const fileName dir =
+            time.globalPath()/functionObject::outputPrefix/"lagrangian"
+           /this->owner().name()/"triboCharging"
+           /time.timeName(time.startTime().value());
+        mkDir(dir);
+        filePtr_.reset(new OFstream(dir/"chargeBalance.dat"));
+        OFstream& os = filePtr_();
+        os.precision(17);
+        os  << "# Contact charging of cloud " << this->owner().name()
+            << " [C]: charge received by each wall patch since the start"
+            << nl << "# time parcels";
+        forAll(walls_, patchi)
+        {
+            if (walls_.set(patchi))
+            {
+                os  << ' ' << patches[patchi].name();
+            }
+        }
+        os  << " balance nPairContactsCharging nWallContactsCharging" << nl;
+    }
+
+    OFstream& os = filePtr_();
+    scalar balance = qParcels;
+    os  << time.value() << ' ' << qParcels;
+    forAll(walls_, patchi)
+    {
+        if (walls_.set(patchi))
+        {
+            os  << ' ' << qWalls[patchi];
+            balance += qWalls[patchi];
+        }
+    }
+    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << endl;
+}
+
+
+// ************************************************************************* //
