@@ -1,17 +1,25 @@
 # Bad input stops with an OpenFOAM FatalIOError naming the entry:
-# missing or out-of-range charge, diameter, density, rho0, epsilonR.
+# missing or out-of-range charge, diameter, density, rho0, epsilonR;
+# contact charging: negative kappaC, a wall patch without parameters, a
+# missing Gamma, a non-positive cutoff distance, charging without
+# ellipsoidCollision.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
 cd "$work/base" || exit 1
 run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
+copyCase triboSingleContact "$work/tribo"
+cd "$work/tribo" || exit 1
+run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
+base=base
 
 # badCase <name> <python re.sub pattern> <replacement> <expected message regex>
+# (a copy of $work/$base with one change)
 badCase()
 {
     local name="$1" pattern="$2" repl="$3" expect="$4" dir="$work/$1"
     rm -rf "$dir"
-    cp -r "$work/base" "$dir"
+    cp -r "$work/$base" "$dir"
     (
         cd "$dir" || exit 1
         $PY - "$pattern" "$repl" <<'PYEOF' || exit 1
@@ -55,3 +63,20 @@ badCase zeroPermittivity 'epsilonR +1;' 'epsilonR 0;' \
     'Entry epsilonR .* = 0 is out of range'
 badCase unknownModel    'electrostaticsModel directCoulomb;' 'electrostaticsModel coulombic;' \
     'Unknown electrostaticsModel type coulombic'
+
+badCase chargingWithoutEllipsoidCollision 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel directCoulomb; triboChargingModel GammaKappa; GammaKappaCoeffs { particles { kappaC 1; } walls { ".*" { kappaC 1; Gamma 0; } } }' \
+    'Entry triboChargingModel GammaKappa needs collisionModel ellipsoidCollision'
+
+base=tribo
+badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \
+    'Entry kappaC = -9.64[0-9]* in .* is out of range: it must be finite and >= 0'
+badCase missingWallPatch 'box +\{ kappaC 0; +Gamma 0; \}' '' \
+    'Wall patch box has no entry'
+badCase missingGamma 'kappaC 9.64; Gamma -2.34e6;' 'kappaC 9.64;' \
+    'Entry Gamma is missing'
+badCase missingParticles 'particles \{ kappaC 0; \}' '' \
+    'Entry particles .* is missing'
+badCase zeroCutoffDistance 'triboChargingModel +GammaKappa;\s*GammaKappaCoeffs' \
+    'triboChargingModel workFunction; workFunctionCoeffs' \
+    'Entry cutoffDistance is missing'

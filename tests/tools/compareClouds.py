@@ -34,6 +34,8 @@ def main():
     ap.add_argument("--cloud", default="cloud")
     ap.add_argument("--tol", type=float, default=1e-10)
     ap.add_argument("--name", default="clouds")
+    ap.add_argument("--qtol", type=float, default=0,
+                    help="relative tolerance of the charges (default: identical)")
     args = ap.parse_args()
 
     xa, Ua, qa = load(args.a, args.cloud)
@@ -62,8 +64,14 @@ def main():
     eU = np.linalg.norm(Ua - Ub[match], axis=1).max()/scale_U if scale_U > 0 else 0.0
     check("velocities", eU <= args.tol, f"(max rel. difference {eU:.3e}, tol {args.tol:g})")
 
-    check("charges", np.array_equal(qa, qb[match]),
-          f"(total {qa.sum():.6e} vs {qb.sum():.6e} C)")
+    if args.qtol == 0:
+        check("charges", np.array_equal(qa, qb[match]),
+              f"(total {qa.sum():.6e} vs {qb.sum():.6e} C)")
+    else:
+        scale_q = np.abs(qa).max()
+        eq = np.abs(qa - qb[match]).max()/scale_q if scale_q > 0 else 0.0
+        check("charges", eq <= args.qtol,
+              f"(max rel. difference {eq:.3e}, tol {args.qtol:g})")
     return 0 if ok else 1
 
 

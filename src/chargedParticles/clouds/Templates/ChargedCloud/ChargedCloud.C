@@ -210,12 +210,21 @@ void Foam::ChargedCloud<CloudType>::evolve()
         td.part() = parcelType::trackingData::tpVelocityHalfStep;
 
         this->solve(*this, td);
-
-        if (triboCharging().active())
-        {
-            triboCharging().writeBalance();
-        }
     }
+}
+
+
+template<class CloudType>
+void Foam::ChargedCloud<CloudType>::postEvolve()
+{
+    // Before the base writes the cloud's output properties (the wall
+    // charges are kept there for a restart)
+    if (triboCharging().active())
+    {
+        triboCharging().writeBalance();
+    }
+
+    CloudType::postEvolve();
 }
 
 

@@ -417,7 +417,7 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     if (recordContacts_)
     {
-        contacts_.append({&pA, &pB, xA, xB, c, -1, referred});
+        contacts_.append({&pA, &pB, xA, xB, c, rA, -1, referred});
     }
 
     // Contact point: the midpoint (exact angular momentum balance)
@@ -602,7 +602,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
                 if (recordContacts_)
                 {
-                    contacts_.append({&p, nullptr, xp, xp, c, patchi, false});
+                    contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false});
                 }
 
                 const point xc = 0.5*(c.x1 + c.x2);

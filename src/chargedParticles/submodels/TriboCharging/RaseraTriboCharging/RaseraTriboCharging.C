@@ -153,7 +153,7 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
       : pA.chargingRecords().matchWallRecord
         (
             xc - pc.xA,
-            cmptMax(pA.semiAxes())
+            pc.radiusA
         ).collisionData();
 
     const scalar dA = A - Amax;
