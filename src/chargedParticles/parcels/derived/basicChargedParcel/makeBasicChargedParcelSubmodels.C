@@ -25,6 +25,7 @@ Description
 #include "NoElectrostatics.H"
 #include "DirectCoulomb.H"
 #include "EllipsoidCollision.H"
+#include "OscillatingFrameForce.H"
 #include "NoTriboCharging.H"
 #include "RaseraTriboCharging.H"
 
@@ -35,6 +36,7 @@ makeCloudFunctionObjectType(ParticleHistory, basicChargedCloud);
 
 // Kinematic and colliding (OpenFOAM's sphere DEM: pairCollision)
 makeParcelForces(basicChargedCloud);
+makeParticleForceModelType(OscillatingFrameForce, basicChargedCloud);
 makeParcelDispersionModels(basicChargedCloud);
 makeParcelInjectionModels(basicChargedCloud);
 makeInjectionModelType(ExplicitParcelInjection, basicChargedCloud);

@@ -206,10 +206,22 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(owner.mesh().boundaryMesh().size(), Zero),
     nPairCharging_(0),
     nWallCharging_(0),
+    balanceInterval_
+    (
+        this->coeffDict().template lookupOrDefault<label>("balanceInterval", 1)
+    ),
     filePtr_(),
     dq_()
 {
     read(fromWorkFunctions);
+
+    if (balanceInterval_ < 1)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry balanceInterval = " << balanceInterval_
+            << " is out of range: it must be >= 1 (time steps)"
+            << exit(FatalIOError);
+    }
 
     // Wall charges of the run this one continues
     scalarField q0;
@@ -245,6 +257,7 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(tm.wallChargeLocal_),
     nPairCharging_(tm.nPairCharging_),
     nWallCharging_(tm.nWallCharging_),
+    balanceInterval_(tm.balanceInterval_),
     filePtr_(),
     dq_()
 {}
@@ -310,6 +323,12 @@ Foam::scalarField Foam::RaseraTriboCharging<CloudType>::wallCharge() const
 template<class CloudType>
 void Foam::RaseraTriboCharging<CloudType>::writeBalance()
 {
+    const Time& time = this->owner().mesh().time();
+    if (time.timeIndex() % balanceInterval_ != 0 && !time.writeTime())
+    {
+        return;
+    }
+
     const scalarField qWalls(wallCharge());
     const scalar qParcels = this->owner().totalCharge();
     const label nPair = returnReduce(nPairCharging_, sumOp<label>());
@@ -318,7 +337,6 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
     nWallCharging_ = 0;
 
     const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
-    const Time& time = this->owner().mesh().time();
 
     if (time.writeTime())
     {
