@@ -180,6 +180,48 @@ def run_ellipsoid(name):
                 plate=abs(float(last[2]) + dq_sim)/abs(dq_sim), A=A)
 
 
+def run_wall_image(name):
+    """PTFE-Al with wallImages: E.n = q/(eps0 S) + q/(4 pi eps0 h^2), h the
+    distance of the contact point (the middle of the overlap) from the
+    image of the centre, r - 3/2 delta with delta = A/(pi r); Eq. (16)
+    integrated over A by RK4."""
+    r, q0, dq_exp, Gamma, kappa, Y, nu, rho, mu, v = WALL_ROWS[name[:-len("-image")]]
+    m = 4/3*math.pi*r**3*rho
+    Estar = Y/(1 - nu**2)
+    Amax = hertz_area(m, r, Estar, v)
+    S = 4*math.pi*r**2
+
+    def dqdA(A, q):
+        h = r - 1.5*A/(math.pi*r)
+        return kappa*eps0*(Gamma - q/(eps0*S) - q/(4*math.pi*eps0*h**2))
+    n = 20000
+    dA = Amax/n
+    q = q0
+    for i in range(n):
+        A = i*dA
+        k1 = dqdA(A, q)
+        k2 = dqdA(A + dA/2, q + dA/2*k1)
+        k3 = dqdA(A + dA/2, q + dA/2*k2)
+        k4 = dqdA(A + dA, q + dA*k3)
+        q += dA/6*(k1 + 2*k2 + 2*k3 + k4)
+    dq_model = q - q0
+    t_end = 1.2*GAP*r/v + 2*contact_time(m, r, Estar, v)
+    parcels = ("                { position (0 0 %.10g); U (0 0 %g); d %g; q %g; }\n"
+               % ((1 + GAP)*r, -v, 2*r, q0))
+    walls = "            plate   { kappaC %g; Gamma %g; }" % (kappa, Gamma)
+    c = make_case(name, r, rho, Y, nu, mu, parcels, walls, 0, t_end)
+    p = os.path.join(c, "constant", "cloudProperties")
+    text = sub(open(p).read(), r"GammaKappaCoeffs\s*\{",
+               "GammaKappaCoeffs\n    {\n        wallImages true;")
+    open(p, "w").write(text)
+    run_case(c)
+    first, last = final_row(c)
+    dq_sim = float(last[1]) - q0
+    return dict(name=name, dq_sim=dq_sim, dq_model=dq_model, dq_exp=float("nan"),
+                conservation=abs(float(last[4]) - q0)/abs(dq_sim),
+                plate=abs(float(last[2]) + dq_sim)/abs(dq_sim), A=Amax)
+
+
 def run_pair(name):
     r, dq0, dq_exp, kappa, Y, nu, rho, mu, v = PAIR_ROWS[name]
     m = 4/3*math.pi*r**3*rho
@@ -206,11 +248,13 @@ def run_pair(name):
 
 
 def main_run(rows):
-    rows = rows or list(WALL_ROWS) + list(PAIR_ROWS) + list(ELLIPSOID_ROWS)
+    rows = rows or (list(WALL_ROWS) + list(PAIR_ROWS) + list(ELLIPSOID_ROWS)
+                    + ["PTFE-Al-image"])
     results = []
     for name in rows:
         res = (run_wall(name) if name in WALL_ROWS
                else run_pair(name) if name in PAIR_ROWS
+               else run_wall_image(name) if name.endswith("-image")
                else run_ellipsoid(name))
         results.append(res)
         err = abs(res["dq_sim"]/res["dq_model"] - 1)

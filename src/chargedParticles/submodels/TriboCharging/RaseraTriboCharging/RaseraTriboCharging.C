@@ -182,6 +182,17 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
     else
     {
         En += (pA.E() & c.n);
+
+        if (wallImages_)
+        {
+            // Image -q_A of the centroid mirrored in the wall plane
+            // (through the wall point x2, normal n)
+            const point xImage = pc.xA + 2*((c.x2 - pc.xA) & c.n)*c.n;
+            const vector r = xc - xImage;
+            En -=
+                pA.q()/(4*constant::mathematical::pi*triboCharging::eps0)
+               *(r & c.n)/pow3(mag(r));
+        }
     }
 
     return law.chargeTransfer(dA, En);
@@ -206,6 +217,10 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(owner.mesh().boundaryMesh().size(), Zero),
     nPairCharging_(0),
     nWallCharging_(0),
+    wallImages_
+    (
+        this->coeffDict().template lookupOrDefault<bool>("wallImages", false)
+    ),
     balanceInterval_
     (
         this->coeffDict().template lookupOrDefault<label>("balanceInterval", 1)
@@ -257,6 +272,7 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(tm.wallChargeLocal_),
     nPairCharging_(tm.nPairCharging_),
     nWallCharging_(tm.nWallCharging_),
+    wallImages_(tm.wallImages_),
     balanceInterval_(tm.balanceInterval_),
     filePtr_(),
     dq_()
