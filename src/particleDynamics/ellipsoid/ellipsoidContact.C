@@ -800,8 +800,23 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
             << exit(FatalError);
     }
 
-    const scalar r1 = e1.semiAxes().x(), r2 = e2.semiAxes().x();
-    const vector d = e2.centre() - e1.centre();
+    return sphereSphere
+    (
+        e1.centre(), e1.semiAxes().x(),
+        e2.centre(), e2.semiAxes().x()
+    );
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
+(
+    const point& c1,
+    const scalar r1,
+    const point& c2,
+    const scalar r2
+)
+{
+    const vector d = c2 - c1;
     const scalar dist = mag(d);
     const scalar overlap = r1 + r2 - dist;
 
@@ -812,15 +827,15 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
     if (!(overlap > 0))
     {
         r.contact = false;
-        r.x1 = e1.centre();
-        r.x2 = e2.centre();
+        r.x1 = c1;
+        r.x2 = c2;
         r.used = method::none;
         return r;
     }
 
     r.contact = true;
-    r.x1 = e1.centre() + r1*r.n;
-    r.x2 = e2.centre() - r2*r.n;
+    r.x1 = c1 + r1*r.n;
+    r.x2 = c2 - r2*r.n;
     r.overlap = overlap;
     r.reducedRadius = r1*r2/(r1 + r2);
     return r;
@@ -942,6 +957,28 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
     r.overlap = max(depth, scalar(0));
     r.x2 = r.x1 + depth*nOut;
     r.reducedRadius = r.contact ? 1/e.curvature(r.x1) : 0;
+    return r;
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::spherePlane
+(
+    const point& c,
+    const scalar radius,
+    const point& p0,
+    const vector& nOut
+)
+{
+    // ellipsoidPlane for a sphere: support point c - r nOut, curvature 1/r
+    result r;
+    r.used = method::plane;
+    r.n = -nOut;
+    r.x1 = c - radius*nOut;
+    const scalar depth = radius - ((c - p0) & nOut);
+    r.contact = depth > 0;
+    r.overlap = max(depth, scalar(0));
+    r.x2 = r.x1 + depth*nOut;
+    r.reducedRadius = r.contact ? radius : 0;
     return r;
 }
 

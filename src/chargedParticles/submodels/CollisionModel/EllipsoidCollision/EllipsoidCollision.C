@@ -367,6 +367,22 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     elasticEnergy_ = 0;
     nUnconverged_ = 0;
     contacts_.clear();
+
+    // Positions of the parcels of every cell, once per collide (the
+    // barycentric-to-Cartesian conversion is costly)
+    const List<DynamicList<parcelType*>>& cellOccupancy =
+        this->owner().cellOccupancy();
+    cellPositions_.setSize(cellOccupancy.size());
+    forAll(cellOccupancy, celli)
+    {
+        const DynamicList<parcelType*>& cell = cellOccupancy[celli];
+        pointField& x = cellPositions_[celli];
+        x.setSize(cell.size());
+        forAll(cell, k)
+        {
+            x[k] = cell[k]->position();
+        }
+    }
 }
 
 
@@ -392,18 +408,11 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
         return;
     }
 
-    const ellipsoid eA(shell(pA, xA));
-    const ellipsoid eB(shell(pB, xB));
-
-    // Two spheres always take the analytic fast path
-    const ellipsoidContact::result c = ellipsoidContact::contact
-    (
-        eA,
-        eB,
-        eA.isSphere() && eB.isSphere()
-      ? ellipsoidContact::method::automatic
-      : method_
-    );
+    // Two spheres: the analytic fast path, without ellipsoid objects
+    const ellipsoidContact::result c =
+        pA.isSphere() && pB.isSphere()
+      ? ellipsoidContact::sphereSphere(xA, rA, xB, rB)
+      : ellipsoidContact::contact(shell(pA, xA), shell(pB, xB), method_);
 
     if (!c.contact || c.overlap <= 0)
     {
@@ -473,17 +482,7 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
     List<DynamicList<parcelType*>>& cellOccupancy =
         this->owner().cellOccupancy();
 
-    // Positions of the parcels of every cell, once
-    List<pointField> cellPositions(cellOccupancy.size());
-    forAll(cellOccupancy, celli)
-    {
-        const DynamicList<parcelType*>& cell = cellOccupancy[celli];
-        cellPositions[celli].setSize(cell.size());
-        forAll(cell, k)
-        {
-            cellPositions[celli][k] = cell[k]->position();
-        }
-    }
+    const List<pointField>& cellPositions = cellPositions_;
 
     forAll(dil, realCelli)
     {
@@ -529,9 +528,13 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
             const point xR = referred.position();
             for (const label realCelli : ril[refCelli])
             {
-                for (parcelType* pPtr : cellOccupancy[realCelli])
+                const DynamicList<parcelType*>& cell = cellOccupancy[realCelli];
+                forAll(cell, k)
                 {
-                    evaluatePair(*pPtr, pPtr->position(), referred, xR, true);
+                    evaluatePair
+                    (
+                        *cell[k], cellPositions_[realCelli][k], referred, xR, true
+                    );
                 }
             }
         }
@@ -554,31 +557,42 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
     forAll(dil, realCelli)
     {
+        label k = 0;
         for (parcelType* pPtr : cellOccupancy[realCelli])
         {
             parcelType& p = *pPtr;
-            const point xp = p.position();
-            const ellipsoid e(shell(p, xp));
+            const point& xp = cellPositions_[realCelli][k++];
+            const bool sphere = p.isSphere();
             const scalar r = cmptMax(p.semiAxes()) + bufferLayer(p);
+            std::unique_ptr<const ellipsoid> ePtr
+            (
+                sphere ? nullptr : new ellipsoid(shell(p, xp))
+            );
             contactPoints.clear();
 
-            // face points, unit normal out of the domain, centre
+            // face, its points, centre, unit normal out of the domain, patch
             auto wallFace =
-                [&](const face& f, const pointField& pts, const label patchi)
+            [&]
+            (
+                const face& f,
+                const pointField& pts,
+                const point& fc,
+                const vector& nOutOfDomain,
+                const label patchi
+            )
             {
-                const pointHit nearest = f.nearestPoint(xp, pts);
-                if (nearest.distance() >= r)
+                // The face's plane out of reach of the shell's bounding
+                // sphere: no contact (cheap test before any geometry)
+                const scalar h = (xp - fc) & nOutOfDomain;
+                if (h <= -r || h >= r)
                 {
                     return;
                 }
-                const vector nOutOfDomain = f.unitNormal(pts);
+
                 const ellipsoidContact::result c =
-                    ellipsoidContact::ellipsoidPlane
-                    (
-                        e,
-                        f.centre(pts),
-                        -nOutOfDomain
-                    );
+                    sphere
+                  ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
+                  : ellipsoidContact::ellipsoidPlane(*ePtr, fc, -nOutOfDomain);
                 if (!c.contact || c.overlap <= 0)
                 {
                     return;
@@ -586,7 +600,17 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
                 // The contact belongs to this face if its plane point lies
                 // on the face (within round-off of the face size)
+                // (bounding box first: most coplanar neighbours fail it)
                 const scalar tol = 1e-9*Foam::sqrt(f.mag(pts)) + SMALL*r;
+                const boundBox bb(pts, f, false);
+                if
+                (
+                    cmptMin(c.x2 - bb.min()) < -tol
+                 || cmptMax(c.x2 - bb.max()) > tol
+                )
+                {
+                    return;
+                }
                 if (f.nearestPoint(c.x2, pts).distance() > tol)
                 {
                     return;
@@ -628,12 +652,16 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 p.torque() += ((xc - xp) ^ F) + Mr;
             };
 
+            // Mesh face centres and areas are cached by the mesh
             for (const label facei : directWallFaces[realCelli])
             {
+                const vector& Sf = mesh.faceAreas()[facei];
                 wallFace
                 (
                     mesh.faces()[facei],
                     mesh.points(),
+                    mesh.faceCentres()[facei],
+                    Sf/mag(Sf),
                     mesh.boundaryMesh().whichPatch(facei)
                 );
             }
@@ -641,7 +669,15 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             for (const label rwfi : il_.rwfilInverse()[realCelli])
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
-                wallFace(rwf, rwf.points(), rwf.patchIndex());
+                const pointField& pts = rwf.points();
+                wallFace
+                (
+                    rwf,
+                    pts,
+                    rwf.centre(pts),
+                    rwf.unitNormal(pts),
+                    rwf.patchIndex()
+                );
             }
         }
     }
