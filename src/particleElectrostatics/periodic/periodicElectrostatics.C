@@ -28,6 +28,12 @@ Foam::periodicElectrostatics::periodicElectrostatics
 )
 :
     L_(L),
+    invL_
+    (
+        L.x() > 0 ? 1/L.x() : 0,
+        L.y() > 0 ? 1/L.y() : 0,
+        L.z() > 0 ? 1/L.z() : 0
+    ),
     epsilonR_(epsilonR),
     k_(pairwiseCoulomb(epsilonR).k())   // checks epsilonR
 {

@@ -57,7 +57,49 @@ void Foam::quasiPeriodicDirect::compute
 
     const label m = Nper_ - 1;
 
-    for (label i = 0; i < N; ++i)
+    if (m == 0)
+    {
+        // Nper = 1: the minimum image only (the paper's choice), written
+        // out per component for speed (the O(N^2) loop dominates)
+        // Positions wrapped into [0, L): |dx| < L, so the minimum image is
+        // one conditional shift (branch-free; std::floor is a libm call
+        // without SSE4.1)
+        const scalar Lx = L_.x(), Ly = L_.y(), Lz = L_.z();
+        const scalar hx = 0.5*Lx, hy = 0.5*Ly, hz = 0.5*Lz;
+        List<point> xw(N);
+        forAll(x, i)
+        {
+            xw[i] = wrap(x[i]);
+        }
+        for (label i = 0; i < N; ++i)
+        {
+            const scalar xi = xw[i].x(), yi = xw[i].y(), zi = xw[i].z();
+            scalar fx = 0, fy = 0, fz = 0;
+            for (label j = i + 1; j < N; ++j)
+            {
+                scalar dx = xi - xw[j].x();
+                scalar dy = yi - xw[j].y();
+                scalar dz = zi - xw[j].z();
+                dx -= Lx*((dx > hx) - (dx < -hx));
+                dy -= Ly*((dy > hy) - (dy < -hy));
+                dz -= Lz*((dz > hz) - (dz < -hz));
+                const scalar r2 = dx*dx + dy*dy + dz*dz;
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Charges " << i << " and " << j << " coincide at "
+                        << x[i] << " (modulo the box)" << exit(FatalError);
+                }
+                const scalar g = 1/(r2*std::sqrt(r2));
+                const scalar gj = q[j]*g, gi = q[i]*g;
+                fx += gj*dx; fy += gj*dy; fz += gj*dz;
+                f[j] -= vector(gi*dx, gi*dy, gi*dz);
+            }
+            f[i] += vector(fx, fy, fz);
+        }
+    }
+
+    for (label i = 0; i < N && m > 0; ++i)
     {
         const point& xi = x[i];
         vector fi(Zero);

@@ -14,6 +14,7 @@
 #include "quasiPeriodicDirect.H"
 #include "pseudoParticle.H"
 #include "p3m.H"
+#include "coulombCollision.H"
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
 #include "Random.H"
@@ -503,6 +504,64 @@ TEST(periodicSelection, DictionaryAndErrors)
 
     FatalError.dontThrowExceptions();
     FatalIOError.dontThrowExceptions();
+}
+
+
+// * * * * * * * * * * * * Time-step criterion, Eq. (23) * * * * * * * * * * //
+
+TEST(periodicCoulombCollision, Table5TimeStepCriterion)
+{
+    // Boutsikakis 2023, Table 5 with Sec. 3.3: Q = 5 nC, m = 1.80e-4 kg,
+    // n = 1e4/(2 pi)^3; d_C/dl of every row follows from the converged
+    // agitation qp2 = 4.5721e-3 m^2/s^2 (dt = 5e-3 s) by Eqs. (21-22),
+    // dl = <|w|> dt. Tolerance: m = 1.80e-4 kg is printed with 3 digits
+    // (+-0.28 %, d_C ~ 1/m); the other inputs have 5.
+    const scalar k = pairwiseCoulomb().k();
+    const scalar Q = 5e-9, m = 1.8e-4, qp2 = 4.5721e-3;
+    const scalar n = 1e4/pow3(2*pi);
+    const scalar w = coulombCollision::meanRelativeSpeed(qp2);
+    const scalar dC = coulombCollision::diameter(k, Q, Q, m, m, w);
+    const scalar rows[4][2] =
+        {{50e-3, 25.82}, {25e-3, 51.63}, {10e-3, 129.09}, {5e-3, 258.17}};
+    for (const auto& r : rows)
+    {
+        EXPECT_NEAR(dC/(w*r[0])/r[1], 1, 2.8e-3) << "dt = " << r[0];
+    }
+
+    // Eq. (23): dt_max = 0.01 d_C/<|w|>; the paper finds convergence for
+    // dt <= 1e-2 s (0.28 % error) but not at 2.5e-2 s
+    const scalar dtMax = coulombCollision::maxTimeStep(k, Q, Q, m, m, qp2);
+    EXPECT_NEAR(dtMax, 0.01*dC/w, 1e-15);
+    EXPECT_GT(dtMax, 1e-2);
+    EXPECT_LT(dtMax, 2.5e-2);
+
+    // Sec. 3.1: Nv_min for Ne = 8 is the Nv = 1 of Table 4
+    EXPECT_EQ(coulombCollision::minNv(8, dC, 2*pi), 1);
+
+    // Eq. (27) is Eqs. (21), (22) and (25) combined: 3 pi/16 = 0.589
+    const scalar qp2e = coulombCollision::agitationEstimate(k, Q, m, n);
+    const scalar dCe = coulombCollision::diameter
+    (
+        k, Q, Q, m, m, coulombCollision::meanRelativeSpeed(qp2e)
+    );
+    EXPECT_NEAR(dCe/coulombCollision::diameterEstimate(n), 1, 1e-12);
+    EXPECT_NEAR(coulombCollision::diameterEstimate(1), 0.589, 5e-4);
+
+    // Eq. (25) vs the measured agitation of Table 5: "~" within 10 %
+    EXPECT_NEAR(qp2e/qp2, 1, 0.1);
+
+    // Eq. (26): tau_el = sqrt(6) tau_C, tau_C = 1/(2Q) sqrt(m/(k n))
+    EXPECT_NEAR
+    (
+        coulombCollision::tauEl(k, Q, m, n),
+        Foam::sqrt(6.0)/(2*Q)*Foam::sqrt(m/(k*n)),
+        1e-12*coulombCollision::tauEl(k, Q, m, n)
+    );
+
+    // Named error for a non-positive mass
+    FatalError.throwExceptions();
+    EXPECT_THROW(coulombCollision::diameter(k, Q, Q, 0, m, w), Foam::error);
+    FatalError.dontThrowExceptions();
 }
 
 
