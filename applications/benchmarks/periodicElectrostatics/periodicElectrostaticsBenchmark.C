@@ -255,6 +255,12 @@ int main(int argc, char *argv[])
     argList::addOption("seed", "S", "seed of the clouds (default 1)");
     argList::addOption("maxDirect", "N", "largest Np for direct (1e5)");
     argList::addOption("maxPseudo", "N", "largest Np for pseudo (1e6)");
+    argList::addOption
+    (
+        "sweep", "list",
+        "p3m only: time and estimated error for these rCut [m] at the first"
+        " Np (check of the cost model of the automatic choice)"
+    );
     argList args(argc, argv);
 
     const bool quick = args.found("quick");
@@ -289,6 +295,49 @@ int main(int argc, char *argv[])
         PEB_BUILD_OPTIONS, clock::dateTime().c_str(), int(std::thread::hardware_concurrency()),
         [](){ std::ifstream f("/proc/loadavg"); std::string s;
             std::getline(f, s); return s; }().c_str());
+
+    if (args.found("sweep"))
+    {
+        const scalarList rcs(args.get<scalarList>("sweep"));
+        const label N = Ns[0];
+        Random rnd(seed);
+        pointField x(N);
+        scalarField q(N, Q);
+        for (label i = 0; i < N; ++i)
+        {
+            x[i] = twoPi*vector
+            (
+                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            );
+        }
+        std::printf("| rc | alpha | mesh | est. error/target | real [s] |"
+            " kspace [s] | total [s] |\n|---|---|---|---|---|---|---|\n");
+        for (const scalar rc : rcs)
+        {
+            dictionary dict;
+            dict.add("L", L);
+            dict.add("accuracy", accuracy);
+            dict.add("rCut", rc);
+            const p3m pm(dict);
+            pm.tune(N, N*Q*Q);
+            List<vector> f;
+            double tr = GREAT, tk = GREAT, tt = GREAT;
+            for (int r = 0; r < 3; ++r)
+            {
+                const double t0 = now();
+                pm.compute(x, q, f);
+                tt = std::min(tt, now() - t0);
+                tr = std::min(tr, double(pm.timeReal_));
+                tk = std::min(tk, double(pm.timeKspace_));
+            }
+            const p3m::parameters& p = pm.params();
+            std::printf("| %.4g | %.4g | %d | %.3g | %.4g | %.4g | %.4g |\n",
+                p.rCut, p.alpha, int(p.mesh[0]), p.error/p.target, tr, tk,
+                tt);
+        }
+        return 0;
+    }
 
     for (const label N : Ns)
     {
@@ -346,11 +395,13 @@ int main(int argc, char *argv[])
         });
 
         // Direct, Nper = 1, and minus the dipole term
+        List<vector> fDirect;
         if (N <= maxDirect)
         {
             const quasiPeriodicDirect direct(L);
             List<vector> f;
             const double t = timeIt([&](){ direct.compute(x, q, f); });
+            fDirect = f;
             rows.push_back({"direct Nper=1", t, true,
                 periodicForceError(f, fE, idx), ""});
             const double t1 = now();
@@ -359,7 +410,8 @@ int main(int argc, char *argv[])
                 periodicForceError(f, fE, idx), "minus min-image dipole"});
         }
 
-        // Pseudo-particle, optimal Ne
+        // Pseudo-particle, optimal Ne; also against the direct sum (the
+        // measure of Boutsikakis 2023, Fig. 14 / Table 3)
         if (N <= maxPseudo)
         {
             const pseudoParticle pp(L);
@@ -368,6 +420,12 @@ int main(int argc, char *argv[])
             rows.push_back({"pseudo Nv=1 Nper=1", t, true,
                 periodicForceError(f, fE, idx),
                 "Ne = " + std::to_string(pp.Ne(N))});
+            if (fDirect.size() == N)
+            {
+                rows.push_back({"pseudo vs direct", t, true,
+                    periodicForceError(f, fDirect, idx),
+                    "error measured against direct Nper=1, not Ewald"});
+            }
         }
 
         // P3M
