@@ -396,6 +396,46 @@ TEST(periodicP3M, OrthorhombicAndOrders)
 }
 
 
+TEST(periodicP3M, SmallSystemsAndWrapping)
+{
+    // All-pairs fallback (few particles) against Ewald, and positions
+    // outside the box give the forces of their wrapped images
+    const vector L(1, 1, 1);
+    for (const label n : {1, 2, 7})
+    {
+        pointField x;
+        scalarField q;
+        randomCloud(n, L, x, q, false, 31);
+        vectorField fRef, f;
+        ewaldSum(L).compute(x, q, fRef);
+        const p3m pm(L, 1, 1e-5);
+        pm.compute(x, q, f);
+        const scalar scale = pm.forceScale(q);
+        EXPECT_LT(rmsDiff(f, fRef), 2*pm.params().error + 1e-12*scale)
+            << "n = " << n;
+    }
+
+    pointField x;
+    scalarField q;
+    randomCloud(500, L, x, q, true, 37);
+    pointField xs(x);
+    forAll(xs, i)
+    {
+        xs[i] += vector(i % 3 - 1, 2*(i % 2) - 1, -3*(i % 5 == 0));
+    }
+    for (const word method : {"ewald", "direct", "pseudoParticle", "p3m"})
+    {
+        dictionary dict(IStringStream("L 1;")());
+        dict.add("method", method);
+        autoPtr<periodicElectrostatics> k = periodicElectrostatics::New(dict);
+        vectorField f, fs;
+        k->compute(x, q, f);
+        k->compute(xs, q, fs);
+        EXPECT_LT(rmsDiff(f, fs), 1e-9*rms(f)) << method;
+    }
+}
+
+
 // * * * * * * * * * * * * * * Isotropy, Eq. (10) * * * * * * * * * * * * * //
 
 TEST(periodicIsotropy, ForceCovariance)
