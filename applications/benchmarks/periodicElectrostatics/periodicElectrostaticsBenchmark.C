@@ -1,0 +1,597 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: benchmark of the tri-periodic electrostatics kernels
+-------------------------------------------------------------------------------
+Application
+    periodicElectrostaticsBenchmark
+
+Description
+    Time per force evaluation and force error vs Ewald for a mono-charged
+    uniform random cloud (Boutsikakis 2023, Sec. 2.1.2: L = 2 pi m,
+    Q = 5 nC) of Np = 1e3 .. 1e6 charges:
+      - direct:     quasi-periodic direct sum, Nper = 1 (Eq. 9);
+      - direct-dip: the same minus the minimum-image dipole term (its limit
+                    for Nper -> inf is Ewald; see quasiPeriodicDirect.H);
+      - pseudo:     pseudo-particle method, Nv = 1, Nper = 1, optimal Ne
+                    (App. A.2);
+      - p3m:        P3M at the requested relative accuracy (default 1e-4
+                    of k <q^2> n^(2/3)), parameters chosen automatically;
+      - lammps:     Debian's LAMMPS PPPM (kspace_style pppm, pair coul/long,
+                    order 5) on the same charges, same real-space cutoff as
+                    p3m, absolute accuracy accuracy*F0/sqrt(2) (LAMMPS
+                    meets the accuracy by the real and the k-space part
+                    each, p3m by their rms sum).
+    Reference: Ewald (tolerance 1e-10) on all particles up to 5000, else on
+    a random subset of 1000 targets (300 above 2e5). Errors per particle |F - F_Ewald|/|F_Ewald|
+    in the bins of Boutsikakis 2023, Fig. 14 / Table 3.
+
+    Timings: median over repeats (single thread); p3m and LAMMPS without
+    their set-up (parameter choice, influence function, FFT plans);
+    LAMMPS = (Pair + Kspace)/steps from its timing breakdown of 10 steps of
+    frozen atoms (its neighbour list is built once, outside), ours
+    includes the cell-list build.
+
+Usage
+    periodicElectrostaticsBenchmark [-quick] [-N '(1000 10000)']
+        [-accuracy 1e-4] [-noLammps] [-runs DIR] [-seed S]
+        [-maxDirect 100000] [-maxPseudo 1000000]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "ewaldSum.H"
+#include "quasiPeriodicDirect.H"
+#include "pseudoParticle.H"
+#include "p3m.H"
+#include "mathematicalConstants.H"
+#include "Random.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "clock.H"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <algorithm>
+#include <thread>
+
+using namespace Foam;
+
+namespace
+{
+
+double now()
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now().time_since_epoch()
+    ).count();
+}
+
+// Median time of f() over repeats: at least 1 run, more while the total
+// stays below ~1.5 s (at most 7)
+template<class F>
+double timeIt(F f)
+{
+    std::vector<double> t;
+    double total = 0;
+    while (t.size() < 7)
+    {
+        const double t0 = now();
+        f();
+        t.push_back(now() - t0);
+        total += t.back();
+        if (total > 1.5 && t.size() >= 1) break;
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size()/2];
+}
+
+struct Row
+{
+    std::string method;
+    double time;
+    bool haveErr;
+    periodicForceError err;
+    std::string note;
+};
+
+// Result of one LAMMPS run
+struct lammpsResult
+{
+    bool ok = false;
+    double pair = 0, kspace = 0, loop = 0;
+    int steps = 0;
+    std::string grid, gEwald, estAbs;
+    List<vector> f;
+};
+
+std::string lammpsExe()
+{
+    for (const char* exe : {"lmp", "lmp_serial"})
+    {
+        const std::string cmd =
+            std::string("command -v ") + exe + " >/dev/null 2>&1";
+        if (std::system(cmd.c_str()) == 0) return exe;
+    }
+    return "";
+}
+
+// Run LAMMPS PPPM in lj units: lengths as ours, charges q/q0, so that
+// F = k q0^2 F_lammps
+lammpsResult runLammps
+(
+    const std::string& exe,
+    const fileName& dir,
+    const vector& L,
+    const pointField& x,
+    const scalarField& qt,
+    const scalar rCut,
+    const scalar absAccuracy,
+    const label order,
+    const label steps
+)
+{
+    lammpsResult r;
+    mkDir(dir);
+    {
+        std::ofstream os((dir/"data.lmp").c_str());
+        char b[256];
+        os << "chargedFoam periodicElectrostatics benchmark\n\n"
+           << x.size() << " atoms\n1 atom types\n\n";
+        std::snprintf(b, sizeof(b), "0 %.17g xlo xhi\n0 %.17g ylo yhi\n"
+            "0 %.17g zlo zhi\n\nMasses\n\n1 1\n\nAtoms # charge\n\n",
+            L.x(), L.y(), L.z());
+        os << b;
+        forAll(x, i)
+        {
+            std::snprintf(b, sizeof(b), "%d 1 %.17g %.17g %.17g %.17g\n",
+                int(i + 1), qt[i], x[i].x(), x[i].y(), x[i].z());
+            os << b;
+        }
+    }
+    {
+        std::ofstream os((dir/"in.lmp").c_str());
+        char b[512];
+        std::snprintf(b, sizeof(b),
+            "units lj\natom_style charge\nboundary p p p\n"
+            "read_data data.lmp\n"
+            "pair_style coul/long %.17g\npair_coeff * *\n"
+            "kspace_style pppm 1e-4\n"
+            "kspace_modify force %.17g order %d\n"
+            "neighbor 0.0 bin\nneigh_modify one 20000 page 2000000\n"
+            "thermo_style custom step pe\n"
+            "dump d all custom 1 forces.dump id fx fy fz\n"
+            "dump_modify d sort id format float %%.17g\n"
+            "run 0\nundump d\nrun %d\n",
+            rCut, absAccuracy, int(order), int(steps));
+        os << b;
+    }
+    const std::string cmd =
+        "cd '" + dir + "' && OMP_NUM_THREADS=1 " + exe
+      + " -in in.lmp -log log.lammps -screen none > lammps.stdout 2>&1";
+    if (std::system(cmd.c_str()) != 0)
+    {
+        std::printf("    LAMMPS failed: see %s/lammps.stdout\n", dir.c_str());
+        return r;
+    }
+
+    // Log: PPPM parameters, the timing breakdown of the last run
+    std::ifstream log((dir/"log.lammps").c_str());
+    std::string line;
+    while (std::getline(log, line))
+    {
+        auto after = [&](const std::string& key, std::string& v)
+        {
+            const auto p = line.find(key);
+            if (p != std::string::npos) v = line.substr(p + key.size());
+        };
+        after("grid = ", r.grid);
+        after("G vector (1/distance) = ", r.gEwald);
+        after("estimated absolute RMS force accuracy = ", r.estAbs);
+        if (line.rfind("Loop time of ", 0) == 0)
+        {
+            std::sscanf(line.c_str(), "Loop time of %lf on %*d procs for %d",
+                &r.loop, &r.steps);
+        }
+        double mn, av;
+        if (std::sscanf(line.c_str(), "Pair | %lf | %lf", &mn, &av) == 2)
+        {
+            r.pair = av;
+        }
+        if (std::sscanf(line.c_str(), "Kspace | %lf | %lf", &mn, &av) == 2)
+        {
+            r.kspace = av;
+        }
+    }
+
+    std::ifstream dump((dir/"forces.dump").c_str());
+    r.f.setSize(x.size(), Zero);
+    label nRead = 0;
+    bool atoms = false;
+    while (std::getline(dump, line))
+    {
+        if (!atoms)
+        {
+            atoms = (line.rfind("ITEM: ATOMS", 0) == 0);
+            continue;
+        }
+        std::istringstream is(line);
+        long id;
+        double fx, fy, fz;
+        if (is >> id >> fx >> fy >> fz && id >= 1 && id <= x.size())
+        {
+            r.f[id - 1] = vector(fx, fy, fz);
+            ++nRead;
+        }
+    }
+    r.ok = (nRead == x.size() && r.steps > 0);
+    return r;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Benchmark of the tri-periodic electrostatics kernels (direct,"
+        " pseudo-particle, P3M) against Ewald and LAMMPS PPPM"
+    );
+    argList::noBanner();
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::removeOption("case");
+    argList::addBoolOption("quick", "Np = 1000, 4000, 10000 (CI size)");
+    argList::addOption("N", "list", "particle numbers, e.g. '(1000 10000)'");
+    argList::addOption("accuracy", "a", "relative accuracy of p3m (1e-4)");
+    argList::addBoolOption("noLammps", "skip LAMMPS");
+    argList::addOption("runs", "dir", "work folder for LAMMPS runs");
+    argList::addOption("seed", "S", "seed of the clouds (default 1)");
+    argList::addOption("maxDirect", "N", "largest Np for direct (1e5)");
+    argList::addOption("maxPseudo", "N", "largest Np for pseudo (1e6)");
+    argList::addOption
+    (
+        "sweep", "list",
+        "p3m only: time and estimated error for these rCut [m] at the first"
+        " Np (check of the cost model of the automatic choice)"
+    );
+    argList args(argc, argv);
+
+    const bool quick = args.found("quick");
+    labelList Ns
+    (
+        quick ? labelList({1000, 4000, 10000})
+              : labelList({1000, 10000, 100000, 1000000})
+    );
+    args.readIfPresent("N", Ns);
+    const scalar accuracy = args.getOrDefault<scalar>("accuracy", 1e-4);
+    const label seed = args.getOrDefault<label>("seed", 1);
+    const label maxDirect = args.getOrDefault<label>("maxDirect", 100000);
+    const label maxPseudo = args.getOrDefault<label>("maxPseudo", 1000000);
+    const fileName runs = args.getOrDefault<fileName>
+    (
+        "runs", fileName(cwd()/(quick ? "runs/quick" : "runs/full"))
+    );
+    const std::string lmp = args.found("noLammps") ? "" : lammpsExe();
+
+    const scalar twoPi = constant::mathematical::twoPi;
+    const vector L(twoPi, twoPi, twoPi);
+    const scalar Q = 5e-9;
+
+    std::printf("## periodicElectrostaticsBenchmark\n\n");
+    std::printf("- mono-charged uniform random cloud, L = 2 pi m, Q = 5 nC"
+        " (Boutsikakis 2023, Sec. 2.1.2), seed %d\n", int(seed));
+    std::printf("- p3m accuracy %g (rms force error / k<q^2>n^(2/3)),"
+        " order 5; LAMMPS: %s\n", accuracy,
+        lmp.empty() ? "not run" : (lmp + ", pppm order 5, coul/long,"
+        " same rc, kspace_modify force = accuracy*F0/sqrt(2)").c_str());
+    std::printf("- build: %s\n- machine: %s, nproc %d, load %s\n\n",
+        PEB_BUILD_OPTIONS, clock::dateTime().c_str(), int(std::thread::hardware_concurrency()),
+        [](){ std::ifstream f("/proc/loadavg"); std::string s;
+            std::getline(f, s); return s; }().c_str());
+
+    if (args.found("sweep"))
+    {
+        const scalarList rcs(args.get<scalarList>("sweep"));
+        const label N = Ns[0];
+        Random rnd(seed);
+        pointField x(N);
+        scalarField q(N, Q);
+        for (label i = 0; i < N; ++i)
+        {
+            x[i] = twoPi*vector
+            (
+                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            );
+        }
+        std::printf("| rc | alpha | mesh | est. error/target | real [s] |"
+            " kspace [s] | total [s] |\n|---|---|---|---|---|---|---|\n");
+        for (const scalar rc : rcs)
+        {
+            dictionary dict;
+            dict.add("L", L);
+            dict.add("accuracy", accuracy);
+            dict.add("rCut", rc);
+            const p3m pm(dict);
+            pm.tune(N, N*Q*Q);
+            List<vector> f;
+            double tr = GREAT, tk = GREAT, tt = GREAT;
+            for (int r = 0; r < 3; ++r)
+            {
+                const double t0 = now();
+                pm.compute(x, q, f);
+                tt = std::min(tt, now() - t0);
+                tr = std::min(tr, double(pm.timeReal_));
+                tk = std::min(tk, double(pm.timeKspace_));
+            }
+            const p3m::parameters& p = pm.params();
+            std::printf("| %.4g | %.4g | %d | %.3g | %.4g | %.4g | %.4g |\n",
+                p.rCut, p.alpha, int(p.mesh[0]), p.error/p.target, tr, tk,
+                tt);
+        }
+        return 0;
+    }
+
+    for (const label N : Ns)
+    {
+        // Cloud
+        Random rnd(seed);
+        pointField x(N);
+        scalarField q(N, Q);
+        for (label i = 0; i < N; ++i)
+        {
+            x[i] = twoPi*vector
+            (
+                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            );
+        }
+
+        // Ewald reference on all or on a subset of targets
+        labelList targets;
+        if (N > 5000)
+        {
+            const label M = (N > 200000) ? 300 : 1000;
+            labelList perm(identity(N));
+            for (label k = 0; k < M; ++k)
+            {
+                const label j = k + rnd.position<label>(0, N - 1 - k);
+                std::swap(perm[k], perm[j]);
+            }
+            targets = SubList<label>(perm, M);
+        }
+        const ewaldSum ewald(L);
+        List<vector> fE(N, Zero);
+        double tE;
+        {
+            const double t0 = now();
+            if (targets.empty())
+            {
+                ewald.compute(x, q, fE);
+            }
+            else
+            {
+                List<vector> fs;
+                ewald.forces(x, q, targets, fs);
+                forAll(targets, k) fE[targets[k]] = fs[k];
+            }
+            tE = now() - t0;
+        }
+        const labelList& idx = targets;
+
+        std::vector<Row> rows;
+        rows.push_back
+        ({
+            "ewald (reference)", tE, false, periodicForceError(fE, fE, idx),
+            targets.empty() ? "all particles"
+          : ("on " + std::to_string(targets.size()) + " targets")
+        });
+
+        // Direct, Nper = 1, and minus the dipole term
+        List<vector> fDirect;
+        if (N <= maxDirect)
+        {
+            const quasiPeriodicDirect direct(L);
+            List<vector> f;
+            const double t = timeIt([&](){ direct.compute(x, q, f); });
+            fDirect = f;
+            rows.push_back({"direct Nper=1", t, true,
+                periodicForceError(f, fE, idx), ""});
+            const double t1 = now();
+            direct.addMinImageDipole(x, q, f, -1);
+            rows.push_back({"direct-dip Nper=1", t + now() - t1, true,
+                periodicForceError(f, fE, idx), "minus min-image dipole"});
+        }
+
+        // Pseudo-particle, optimal Ne; also against the direct sum (the
+        // measure of Boutsikakis 2023, Fig. 14 / Table 3)
+        if (N <= maxPseudo)
+        {
+            const pseudoParticle pp(L);
+            List<vector> f;
+            const double t = timeIt([&](){ pp.compute(x, q, f); });
+            rows.push_back({"pseudo Nv=1 Nper=1", t, true,
+                periodicForceError(f, fE, idx),
+                "Ne = " + std::to_string(pp.Ne(N))});
+            if (fDirect.size() == N)
+            {
+                rows.push_back({"pseudo vs direct", t, true,
+                    periodicForceError(f, fDirect, idx),
+                    "error measured against direct Nper=1, not Ewald"});
+            }
+        }
+
+        // P3M
+        const p3m pm(L, 1, accuracy);
+        double tSetup;
+        {
+            const double t0 = now();
+            pm.tune(N, N*Q*Q);
+            tSetup = now() - t0;
+        }
+        List<vector> fP;
+        const double tP = timeIt([&](){ pm.compute(x, q, fP); });
+        const p3m::parameters& pp = pm.params();
+        char note[512];
+        std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
+            " est. %.3g (target %.3g) N; real %.3g s, kspace %.3g s;"
+            " setup %.2f s", pp.rCut, pp.alpha, int(pp.mesh[0]),
+            int(pp.order), pp.error, pp.target, pm.timeReal_,
+            pm.timeKspace_, tSetup);
+        rows.push_back({"p3m", tP, true, periodicForceError(fP, fE, idx),
+            note});
+
+        // P3M at 10x and 100x looser accuracy: still far below the error
+        // of the quasi-periodic methods (the pseudo-particle comparison)
+        for (const scalar loosen : {10.0, 100.0})
+        {
+            const p3m pl(L, 1, min(0.1, loosen*accuracy));
+            pl.tune(N, N*Q*Q);
+            List<vector> fl;
+            const double tl = timeIt([&](){ pl.compute(x, q, fl); });
+            const p3m::parameters& pq = pl.params();
+            std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
+                " est. %.3g (target %.3g) N", pq.rCut, pq.alpha,
+                int(pq.mesh[0]), int(pq.order), pq.error, pq.target);
+            rows.push_back
+            ({
+                "p3m accuracy " + std::to_string(loosen*accuracy)
+                    .substr(0, 6), tl, true,
+                periodicForceError(fl, fE, idx), note
+            });
+        }
+
+        // LAMMPS PPPM at the nominal accuracy and 10x tighter (its measured
+        // error can exceed ours at the nominal one: equal accuracy is then
+        // bracketed)
+        std::vector<lammpsResult> lrs;
+        if (!lmp.empty())
+        {
+            scalarField qt(q/Q);
+            pointField xw(N);
+            forAll(x, i)
+            {
+                for (direction d = 0; d < 3; ++d)
+                {
+                    xw[i][d] = x[i][d] - L[d]*std::floor(x[i][d]/L[d]);
+                }
+            }
+            const scalar n = N/(L.x()*L.y()*L.z());
+            const scalar F0t = Foam::pow(n, 2.0/3.0);  // <qt^2> = 1
+            for (const scalar tighten : {1.0, 10.0})
+            {
+                // acc/10 needs ~N^(4/3) mesh memory: 1.1 GB at 1e5
+                if (tighten > 1 && N > 200000) continue;
+                lammpsResult lr = runLammps
+                (
+                    lmp,
+                    runs/("N" + std::to_string(N) + "_acc"
+                  + std::to_string(int(tighten))),
+                    L, xw, qt, pp.rCut,
+                    accuracy*F0t/Foam::sqrt(2.0)/tighten, 5, 10
+                );
+                if (!lr.ok) continue;
+                const scalar c = pm.k()*Q*Q;
+                forAll(lr.f, i) lr.f[i] *= c;
+                const double t = (lr.pair + lr.kspace)/lr.steps;
+                std::snprintf(note, sizeof(note), "grid %s, g_ewald %s,"
+                    " est. abs. %s (lj units), pair %.3g s, kspace %.3g s"
+                    " per step", lr.grid.c_str(), lr.gEwald.c_str(),
+                    lr.estAbs.c_str(), lr.pair/lr.steps,
+                    lr.kspace/lr.steps);
+                rows.push_back
+                ({
+                    tighten == 1 ? "lammps pppm" : "lammps pppm acc/10", t,
+                    true, periodicForceError(lr.f, fE, idx), note
+                });
+                lrs.push_back(lr);
+            }
+        }
+
+        // Table
+        std::printf("### Np = %d\n\n", int(N));
+        std::printf("| method | time/eval [s] | rms err/rms F | median"
+            " rel. err | p90 | 0-1 %% | 1-5 %% | 5-10 %% | 10-20 %% |"
+            " 20-50 %% | >50 %% | notes |\n");
+        std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        for (const Row& r : rows)
+        {
+            std::printf("| %s | %.4g |", r.method.c_str(), r.time);
+            if (r.haveErr)
+            {
+                const periodicForceError& e = r.err;
+                std::printf(" %.3g | %.3g | %.3g |",
+                    e.rmsAbs/max(e.rmsRef, VSMALL), e.median, e.p90);
+                for (const scalar b : e.bins)
+                {
+                    std::printf(" %.1f |", 100*b);
+                }
+            }
+            else
+            {
+                std::printf(" - | - | - | - | - | - | - | - | - |");
+            }
+            std::printf(" %s |\n", r.note.c_str());
+        }
+        std::printf("\n");
+
+        // Ratios within this run
+        auto find = [&](const std::string& m) -> const Row*
+        {
+            for (const Row& r : rows)
+            {
+                if (r.method.rfind(m, 0) == 0) return &r;
+            }
+            return nullptr;
+        };
+        const Row* rp = find("p3m");
+        const Row* rl = find("lammps");
+        const Row* rs = find("pseudo");
+        if (rl)
+        {
+            scalar d = 0;
+            forAll(fP, i) d += magSqr(fP[i] - lrs[0].f[i]);
+            std::printf("- p3m time / LAMMPS time = %.3g (goal <= 1.5);"
+                " rms |F_p3m - F_lammps| / rms F = %.3g; rms error p3m %.3g,"
+                " LAMMPS %.3g", rp->time/rl->time,
+                Foam::sqrt(d/N)/max(rp->err.rmsRef, VSMALL),
+                rp->err.rmsAbs/rp->err.rmsRef, rl->err.rmsAbs/rl->err.rmsRef);
+            const Row* rt = find("lammps pppm acc/10");
+            if (rt)
+            {
+                std::printf("; p3m time / LAMMPS acc/10 time = %.3g"
+                    " (its rms error %.3g)", rp->time/rt->time,
+                    rt->err.rmsAbs/rt->err.rmsRef);
+            }
+            std::printf("\n");
+        }
+        if (rs)
+        {
+            std::printf("- pseudo time / p3m time = %.3g; p3m median error"
+                " %.3g vs pseudo %.3g\n", rs->time/rp->time, rp->err.median,
+                rs->err.median);
+            for (const Row& r : rows)
+            {
+                if (r.method.rfind("p3m accuracy", 0) != 0) continue;
+                std::printf("- pseudo time / %s time = %.3g; its median"
+                    " error %.3g, p90 %.3g (pseudo: %.3g, %.3g)\n",
+                    r.method.c_str(), rs->time/r.time, r.err.median,
+                    r.err.p90, rs->err.median, rs->err.p90);
+            }
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+    }
+
+    return 0;
+}
+
+
+// ************************************************************************* //
