@@ -284,7 +284,7 @@ void Foam::ChargedCloud<CloudType>::info()
         }
     }
 
-    if (electrostatics().active())
+    if (electrostatics().active() && electrostatics().hasEnergy())
     {
         Info<< "    Electrostatic energy            = "
             << electrostatics().energy() << nl;

@@ -24,6 +24,7 @@ Description
 #include "ParticleHistory.H"
 #include "NoElectrostatics.H"
 #include "DirectCoulomb.H"
+#include "PeriodicCoulomb.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "NoTriboCharging.H"
@@ -50,6 +51,7 @@ makeParcelSurfaceFilmModels(basicChargedCloud);
 makeElectrostaticsModel(basicChargedCloud);
 makeElectrostaticsModelType(NoElectrostatics, basicChargedCloud);
 makeElectrostaticsModelType(DirectCoulomb, basicChargedCloud);
+makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);

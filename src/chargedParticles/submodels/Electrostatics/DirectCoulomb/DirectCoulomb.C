@@ -26,35 +26,6 @@ Foam::scalar Foam::DirectCoulomb<CloudType>::readEpsilonR
 
 
 template<class CloudType>
-void Foam::DirectCoulomb<CloudType>::gatherCharges
-(
-    List<pointField>& allX,
-    List<scalarField>& allQ
-) const
-{
-    allX.setSize(Pstream::nProcs());
-    allQ.setSize(Pstream::nProcs());
-
-    pointField& x = allX[Pstream::myProcNo()];
-    scalarField& q = allQ[Pstream::myProcNo()];
-    x.setSize(this->owner().size());
-    q.setSize(this->owner().size());
-    label i = 0;
-    for (const auto& p : this->owner())
-    {
-        x[i] = p.position();
-        q[i] = p.q();
-        ++i;
-    }
-
-    Pstream::gatherList(allX);
-    Pstream::scatterList(allX);
-    Pstream::gatherList(allQ);
-    Pstream::scatterList(allQ);
-}
-
-
-template<class CloudType>
 void Foam::DirectCoulomb<CloudType>::correctContactPairs
 (
     const List<pointField>& allX,
@@ -164,7 +135,7 @@ void Foam::DirectCoulomb<CloudType>::calculate()
 {
     List<pointField> allX;
     List<scalarField> allQ;
-    gatherCharges(allX, allQ);
+    this->gatherCharges(allX, allQ);
 
     const label me = Pstream::myProcNo();
     const pointField& x = allX[me];
@@ -205,7 +176,7 @@ Foam::scalar Foam::DirectCoulomb<CloudType>::energy() const
 {
     List<pointField> allX;
     List<scalarField> allQ;
-    gatherCharges(allX, allQ);
+    this->gatherCharges(allX, allQ);
 
     const label me = Pstream::myProcNo();
     scalar e = coulomb_.energy(allX[me], allQ[me]);

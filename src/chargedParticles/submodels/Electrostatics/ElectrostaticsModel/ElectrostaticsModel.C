@@ -23,6 +23,38 @@ Foam::dictionary Foam::ElectrostaticsModel<CloudType>::withCoeffs
 }
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::gatherCharges
+(
+    List<pointField>& allX,
+    List<scalarField>& allQ
+) const
+{
+    allX.setSize(Pstream::nProcs());
+    allQ.setSize(Pstream::nProcs());
+
+    pointField& x = allX[Pstream::myProcNo()];
+    scalarField& q = allQ[Pstream::myProcNo()];
+    x.setSize(this->owner().size());
+    q.setSize(this->owner().size());
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        x[i] = p.position();
+        q[i] = p.q();
+        ++i;
+    }
+
+    Pstream::gatherList(allX);
+    Pstream::scatterList(allX);
+    Pstream::gatherList(allQ);
+    Pstream::scatterList(allQ);
+}
+
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
