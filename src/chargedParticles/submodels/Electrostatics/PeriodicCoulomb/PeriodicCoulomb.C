@@ -44,6 +44,68 @@ Foam::dictionary Foam::PeriodicCoulomb<CloudType>::kernelDict
 }
 
 
+template<class CloudType>
+void Foam::PeriodicCoulomb<CloudType>::reportTimeStep() const
+{
+    const Time& time = this->owner().mesh().time();
+    if (time.timeIndex() % 100 != 1 && time.timeIndex() > 1)
+    {
+        return;
+    }
+
+    // Cloud means (all processors): |q|, m, U and U.U
+    scalar n = 0, sumQ = 0, sumM = 0, sumUU = 0;
+    vector sumU(Zero);
+    for (const auto& p : this->owner())
+    {
+        n += 1;
+        sumQ += mag(p.q());
+        sumM += p.mass();
+        sumU += p.U();
+        sumUU += magSqr(p.U());
+    }
+    reduce(n, sumOp<scalar>());
+    reduce(sumQ, sumOp<scalar>());
+    reduce(sumM, sumOp<scalar>());
+    reduce(sumU, sumOp<vector>());
+    reduce(sumUU, sumOp<scalar>());
+    if (n == 0 || sumQ == 0)
+    {
+        return;
+    }
+
+    const scalar Q = sumQ/n, m = sumM/n;
+    const scalar density = n/cmptProduct(kernel_->L());
+    const scalar k = kernel_->k();
+    // The larger of the measured agitation and the stationary estimate
+    // of Eq. (25) (the smaller time step: the cloud starts at rest)
+    const scalar qp2Measured = 0.5*max(sumUU/n - magSqr(sumU/n), scalar(0));
+    const scalar qp2Estimate =
+        coulombCollision::agitationEstimate(k, Q, m, density);
+    const bool measured = qp2Measured >= qp2Estimate;
+    const scalar qp2 = max(qp2Measured, qp2Estimate);
+    const scalar w = coulombCollision::meanRelativeSpeed(qp2);
+    const scalar dC = coulombCollision::diameter(k, Q, Q, m, m, w);
+    const scalar dtMax = coulombCollision::maxTimeStep(dC, w);
+    const scalar dt = time.deltaTValue();
+
+    Info<< "    Coulomb collisions (Boutsikakis 2023): q_p^2 = " << qp2
+        << (measured ? " (measured)" : " (Eq. 25 estimate; measured "
+          + Foam::name(qp2Measured) + ")").c_str()
+        << " m2/s2, d_C = " << dC
+        << " m, tau_el = " << coulombCollision::tauEl(k, Q, m, density)
+        << " s; Eq. 23 time step " << dtMax << " s (deltaT " << dt << " s)"
+        << endl;
+    if (dt > dtMax)
+    {
+        WarningInFunction
+            << "deltaT = " << dt << " s exceeds the Coulomb-collision time"
+            << " step " << dtMax << " s of Boutsikakis 2023 Eq. 23: close"
+            << " approaches are not resolved" << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -94,6 +156,8 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
 template<class CloudType>
 void Foam::PeriodicCoulomb<CloudType>::calculate()
 {
+    reportTimeStep();
+
     List<pointField> allX;
     List<scalarField> allQ;
     this->gatherCharges(allX, allQ);
