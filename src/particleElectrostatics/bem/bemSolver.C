@@ -679,20 +679,44 @@ Foam::bemSolver::controls& Foam::bemSolver::ctrl()
 
 Foam::label Foam::bemSolver::shape(const vector& semiAxes, const label nPatches)
 {
+    return shape(semiAxes, nPatches, vector(1, 0, 0), 1);
+}
+
+
+Foam::label Foam::bemSolver::shape
+(
+    const vector& semiAxes,
+    const label nPatches,
+    const vector& focus,
+    const scalar lambda
+)
+{
     const label nEven = nPatches + (nPatches % 2);
+    const vector f = focus/max(mag(focus), VSMALL);
     for (label s = 0; s < label(shapes_.size()); ++s)
     {
+        const ellipsoidSurfaceMesh& m = *shapes_[s]->mesh;
         if
         (
-            shapes_[s]->mesh->semiAxes() == semiAxes
-         && shapes_[s]->mesh->size() == nEven
+            m.semiAxes() == semiAxes && m.size() == nEven
+         && m.lambda() == lambda && (lambda == 1 || m.focus() == f)
         )
         {
             return s;
         }
     }
     std::unique_ptr<shapeData> sd(new shapeData);
-    sd->mesh.reset(new ellipsoidSurfaceMesh(semiAxes, nPatches));
+    if (lambda == 1)
+    {
+        sd->mesh.reset(new ellipsoidSurfaceMesh(semiAxes, nPatches));
+    }
+    else
+    {
+        sd->mesh.reset
+        (
+            new ellipsoidSurfaceMesh(semiAxes, nPatches, focus, lambda)
+        );
+    }
     buildNearBody(*sd);
     shapes_.push_back(std::move(sd));
     return shapes_.size() - 1;

@@ -560,6 +560,37 @@ void Foam::ellipsoidSurfaceMesh::relax(const label nIter)
 }
 
 
+void Foam::ellipsoidSurfaceMesh::grade()
+{
+    if (lambda_ == 1)
+    {
+        return;
+    }
+    const vector& s = semiAxes_;
+    // Focus direction on the scaled unit sphere
+    vector f(focus_.x()/s.x(), focus_.y()/s.y(), focus_.z()/s.z());
+    f /= mag(f);
+    for (point& p : points_)
+    {
+        vector u(p.x()/s.x(), p.y()/s.y(), p.z()/s.z());
+        u /= mag(u);
+        const scalar ct = max(-1.0, min(1.0, u & f));
+        const scalar t = Foam::acos(ct);
+        vector e = u - ct*f;
+        const scalar me = mag(e);
+        if (me < 1e-14)
+        {
+            continue;   // on the axis: fixed point of the map
+        }
+        e /= me;
+        const scalar t2 = 2*Foam::atan(lambda_*Foam::tan(0.5*t));
+        const vector u2 = Foam::cos(t2)*f + Foam::sin(t2)*e;
+        p = project(s, point(u2.x()*s.x(), u2.y()*s.y(), u2.z()*s.z()));
+    }
+    flipEdges();
+}
+
+
 void Foam::ellipsoidSurfaceMesh::computePatchData()
 {
     const label nF = faces_.size();
@@ -627,10 +658,39 @@ Foam::ellipsoidSurfaceMesh::ellipsoidSurfaceMesh
 (
     const vector& semiAxes,
     const label nPatches,
+    const vector& focus,
+    const scalar lambda,
     const label nRelax
 )
 :
-    semiAxes_(semiAxes)
+    semiAxes_(semiAxes),
+    focus_(focus/max(mag(focus), VSMALL)),
+    lambda_(lambda)
+{
+    if (!(lambda > 0 && lambda <= 1) || mag(focus) < VSMALL)
+    {
+        FatalErrorInFunction
+            << "grading lambda = " << lambda << " out of range (0, 1] or"
+            << " zero focus direction " << focus << exit(FatalError);
+    }
+    const label nF = nPatches + (nPatches % 2);
+    generatePoints(nF/2 + 2);
+    relax(nRelax);
+    grade();
+    computePatchData();
+}
+
+
+Foam::ellipsoidSurfaceMesh::ellipsoidSurfaceMesh
+(
+    const vector& semiAxes,
+    const label nPatches,
+    const label nRelax
+)
+:
+    semiAxes_(semiAxes),
+    focus_(1, 0, 0),
+    lambda_(1)
 {
     if (cmptMin(semiAxes) <= 0 || !std::isfinite(cmptMax(semiAxes)))
     {
