@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the bemElectrostatics dictionaries of the validation sweeps."""
-import os, sys
+import math, os, sys
 
 quick = len(sys.argv) > 1 and sys.argv[1] == "quick"
 os.makedirs("dicts", exist_ok=True)
@@ -8,18 +8,24 @@ os.makedirs("dicts", exist_ok=True)
 HEAD = "FoamFile { version 2.0; format ascii; class dictionary; object bemElectrostaticsDict; }\n"
 
 
-def particle(name, centre, axes, kappa, sigma, n, euler=(0, 0, 0), grading=None):
+def particle(name, centre, axes, kappa, sigma, n, euler=(0, 0, 0), grading=None, charge=None):
     g = ""
+    q = "sigmaF %g;" % sigma if charge is None else "charge %.16g;" % charge
     if grading:
         g = "grading { lambda %g; focus (%g %g %g); }" % (grading[0], *grading[1])
     return ("%s { centre (%g %g %g); orientation { type euler; angles (%g %g %g); }"
-            " semiAxes (%g %g %g); kappa %g; sigmaF %g; nPatches %d; %s }\n"
-            % (name, *centre, *euler, *axes, kappa, sigma, n, g))
+            " semiAxes (%g %g %g); kappa %g; %s nPatches %d; %s }\n"
+            % (name, *centre, *euler, *axes, kappa, q, n, g))
 
 
-def write(name, body):
+os.makedirs("meta", exist_ok=True)
+
+
+def write(name, body, gap0=0.0):
     with open(os.path.join("dicts", name), "w") as f:
         f.write(HEAD + body)
+    with open(os.path.join("meta", name), "w") as f:   # sweep value 0 = gap0
+        f.write("%g\n" % gap0)
 
 
 # Torque on a neutral prolate spheroid (Ruan Fig. 8c)
@@ -32,7 +38,8 @@ for a in ([1, 2, 5, 10] if quick else range(1, 11)):
           + 'outputDir "postProcessing/torque_a%02d";\n' % a
           + "particles {\n" + particle("p", (0, 0, 0), (a, 1, 1), 2.5, 0, n) + "}\n")
 
-# Two charged spheres (Ruan Fig. 7): p2 starts at gap 0.05 R
+# Two charged spheres (Ruan Fig. 7): p2 starts at gap 0.05 R; free charge
+# Q = 4 pi R^2 sigma exactly (sigma_f = Q/meshed area), as in the exact series
 gaps = [0.05, 0.1, 0.2, 0.5, 1, 2, 3] if not quick else [0.05, 0.5, 2]
 vals = " ".join("%g" % (g - gaps[0]) for g in gaps)
 for kp in ([10, 40, 100] if not quick else [100]):
@@ -44,10 +51,12 @@ for kp in ([10, 40, 100] if not quick else [100]):
                   % (" inducedDipole" if n == 500 else "")
                   + 'outputDir "postProcessing/%s";\n' % tag
                   + "particles {\n"
-                  + particle("p1", (0, 0, 0), (1, 1, 1), kp, 1, n, grading=(0.35, (1, 0, 0)))
+                  + particle("p1", (0, 0, 0), (1, 1, 1), kp, 1, n, grading=(0.35, (1, 0, 0)),
+                             charge=4 * math.pi)
                   + particle("p2", (2 + gaps[0], 0, 0), (1, 1, 1), kp, sgn, n, euler=(180, 0, 0),
-                             grading=(0.35, (1, 0, 0)))
-                  + "}\nsweep { type translate; particle p2; direction (1 0 0); values (%s); }\n" % vals)
+                             grading=(0.35, (1, 0, 0)), charge=sgn * 4 * math.pi)
+                  + "}\nsweep { type translate; particle p2; direction (1 0 0); values (%s); }\n" % vals,
+                  gaps[0])
 
 # Two prolate spheroids a = 2, b = c = 1 (Ruan Figs. 9-10), approach along x
 gaps = [0.05, 0.1, 0.2, 0.5, 1, 2] if not quick else [0.1, 1]
@@ -65,4 +74,5 @@ for cfg, (e1, e2, eu1, eu2) in {"headToTail": (2, 2, (0, 0, 0), (0, 0, 0)),
               + "particles {\n"
               + particle("p1", (0, 0, 0), (2, 1, 1), 10, 1, n, euler=eu1)
               + particle("p2", (e1 + gaps[0] + e2, 0, 0), (2, 1, 1), 10, sgn, n, euler=eu2)
-              + "}\nsweep { type translate; particle p2; direction (1 0 0); values (%s); }\n" % vals)
+              + "}\nsweep { type translate; particle p2; direction (1 0 0); values (%s); }\n" % vals,
+              gaps[0])

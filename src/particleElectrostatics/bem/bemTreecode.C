@@ -37,6 +37,7 @@ Foam::label Foam::bemTreecode::build
     }
     nodes_.push_back(blank);
     point boxCentre(Zero);
+    vector extent(Zero);
     {
         node& nd = nodes_.back();
         nd.begin = begin;
@@ -58,6 +59,7 @@ Foam::label Foam::bemTreecode::build
         }
         nd.centre /= (end - begin);
         boxCentre = 0.5*(lo + hi);
+        extent = hi - lo;
         for (label k = begin; k < end; ++k)
         {
             const label g = group_.size() ? group_[perm_[k]] : 0;
@@ -77,16 +79,23 @@ Foam::label Foam::bemTreecode::build
         return id;
     }
 
-    // Partition into octants about the box centre
+    // Partition into octants about the box centre, splitting only the
+    // directions longer than half the longest one (cubic octants of an
+    // elongated box, e.g. particles in a row, give slivers that are never
+    // accepted as multipoles)
     const point c = boxCentre;
+    const scalar emax = cmptMax(extent);
+    const bool sx = extent.x() > 0.5*emax;
+    const bool sy = extent.y() > 0.5*emax;
+    const bool sz = extent.z() > 0.5*emax;
     label* first = perm_.begin() + begin;
     label* last = perm_.begin() + end;
     label* bounds[9];
     bounds[0] = first;
     bounds[8] = last;
-    auto cx = [&](label i) { return src_[i].x() < c.x(); };
-    auto cy = [&](label i) { return src_[i].y() < c.y(); };
-    auto cz = [&](label i) { return src_[i].z() < c.z(); };
+    auto cx = [&](label i) { return !sx || src_[i].x() < c.x(); };
+    auto cy = [&](label i) { return !sy || src_[i].y() < c.y(); };
+    auto cz = [&](label i) { return !sz || src_[i].z() < c.z(); };
     bounds[4] = std::partition(first, last, cx);
     bounds[2] = std::partition(bounds[0], bounds[4], cy);
     bounds[6] = std::partition(bounds[4], bounds[8], cy);
@@ -172,7 +181,9 @@ Foam::bemTreecode::bemTreecode
     perm_(identity(sources.size())),
     theta_(theta),
     order_(order),
-    leafSize_(leafSize)
+    leafSize_(leafSize),
+    nDirect_(0),
+    nMultipole_(0)
 {
     if (!(theta > 0 && theta <= 1))
     {
@@ -223,6 +234,8 @@ void Foam::bemTreecode::evaluate
         return;
     }
     upward(q);
+    nDirect_ = 0;
+    nMultipole_ = 0;
 
     const scalar c4pi = 1/(4*pi);
     const scalar theta2 = sqr(theta_);
@@ -244,6 +257,7 @@ void Foam::bemTreecode::evaluate
             const scalar r2 = magSqr(R);
             if (sqr(nd.radius) < theta2*r2)
             {
+                nMultipole_ += 1;
                 const scalar ir2 = 1/r2;
                 const scalar ir = Foam::sqrt(ir2);
                 const scalar ir3 = ir*ir2;
@@ -266,6 +280,7 @@ void Foam::bemTreecode::evaluate
             }
             else if (nd.nChild == 0)
             {
+                nDirect_ += nd.end - nd.begin;
                 for (label k = nd.begin; k < nd.end; ++k)
                 {
                     const label j = perm_[k];
@@ -320,6 +335,8 @@ void Foam::bemTreecode::evaluateOthers
         return;
     }
     upward(q);
+    nDirect_ = 0;
+    nMultipole_ = 0;
 
     const scalar c4pi = 1/(4*pi);
     const scalar theta2 = sqr(theta_);
@@ -347,6 +364,7 @@ void Foam::bemTreecode::evaluateOthers
             const bool mixed = nd.gMin <= gt && gt <= nd.gMax;
             if (!mixed && sqr(nd.radius) < theta2*r2)
             {
+                nMultipole_ += 1;
                 const scalar ir2 = 1/r2;
                 const scalar ir = Foam::sqrt(ir2);
                 const scalar ir3 = ir*ir2;
@@ -369,6 +387,7 @@ void Foam::bemTreecode::evaluateOthers
             }
             else if (nd.nChild == 0)
             {
+                nDirect_ += nd.end - nd.begin;
                 for (label k = nd.begin; k < nd.end; ++k)
                 {
                     const label j = perm_[k];
