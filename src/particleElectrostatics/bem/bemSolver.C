@@ -9,7 +9,7 @@
 
 #include <Eigen/Dense>
 
-#include <chrono>
+#include <ctime>
 #include <cmath>
 #include <unordered_map>
 
@@ -23,12 +23,13 @@ struct Foam::bemSolver::luBlock
 namespace
 {
 
+// Thread CPU time [s]: the solver is single-threaded, and CPU time is not
+// inflated by other processes on a shared machine
 double now()
 {
-    return std::chrono::duration<double>
-    (
-        std::chrono::steady_clock::now().time_since_epoch()
-    ).count();
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9*ts.tv_nsec;
 }
 
 } // namespace
