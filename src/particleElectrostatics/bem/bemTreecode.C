@@ -127,6 +127,11 @@ Foam::label Foam::bemTreecode::build
 
 void Foam::bemTreecode::upward(const UList<scalar>& q) const
 {
+    qSorted_.setSize(perm_.size());
+    forAll(perm_, k)
+    {
+        qSorted_[k] = q[perm_[k]];
+    }
     // Children are created after their parent: a reverse sweep is a
     // post-order traversal
     for (label id = nodes_.size() - 1; id >= 0; --id)
@@ -139,11 +144,11 @@ void Foam::bemTreecode::upward(const UList<scalar>& q) const
         {
             for (label k = nd.begin; k < nd.end; ++k)
             {
-                const label j = perm_[k];
-                const vector d = src_[j] - nd.centre;
-                nd.Q += q[j];
-                nd.P += q[j]*d;
-                nd.Qd += q[j]*(3*sqr(d) - magSqr(d)*symmTensor::I);
+                const vector d = srcSorted_[k] - nd.centre;
+                const scalar qk = qSorted_[k];
+                nd.Q += qk;
+                nd.P += qk*d;
+                nd.Qd += qk*(3*sqr(d) - magSqr(d)*symmTensor::I);
             }
         }
         else
@@ -208,6 +213,11 @@ Foam::bemTreecode::bemTreecode
     {
         build(0, sources.size(), 0);
     }
+    srcSorted_.setSize(src_.size());
+    forAll(perm_, k)
+    {
+        srcSorted_[k] = src_[perm_[k]];
+    }
 }
 
 
@@ -242,8 +252,12 @@ void Foam::bemTreecode::evaluate
     std::vector<label> stack;
     stack.reserve(256);
 
-    forAll(targets, t)
+    forAll(targets, tt)
     {
+        // Same set: visit the targets in tree order (neighbouring targets
+        // traverse the same nodes: cache reuse)
+        const label t =
+            (sameSet && targets.size() == perm_.size()) ? perm_[tt] : tt;
         const point& x = targets[t];
         vector Et(Zero);
         scalar pt = 0;
@@ -283,13 +297,13 @@ void Foam::bemTreecode::evaluate
                 nDirect_ += nd.end - nd.begin;
                 for (label k = nd.begin; k < nd.end; ++k)
                 {
-                    const label j = perm_[k];
-                    if (sameSet && j == t) continue;
-                    const vector d = x - src_[j];
+                    if (sameSet && perm_[k] == t) continue;
+                    const vector d = x - srcSorted_[k];
                     const scalar d2 = magSqr(d);
                     const scalar id = 1/Foam::sqrt(d2);
-                    Et += (q[j]*id/d2)*d;
-                    pt += q[j]*id;
+                    const scalar qk = qSorted_[k];
+                    Et += (qk*id/d2)*d;
+                    pt += qk*id;
                 }
             }
             else
@@ -392,11 +406,12 @@ void Foam::bemTreecode::evaluateOthers
                 {
                     const label j = perm_[k];
                     if ((sameSet && j == t) || group_[j] == gt) continue;
-                    const vector d = x - src_[j];
+                    const vector d = x - srcSorted_[k];
                     const scalar d2 = magSqr(d);
                     const scalar id = 1/Foam::sqrt(d2);
-                    Et += (q[j]*id/d2)*d;
-                    pt += q[j]*id;
+                    const scalar qk = qSorted_[k];
+                    Et += (qk*id/d2)*d;
+                    pt += qk*id;
                 }
             }
             else
