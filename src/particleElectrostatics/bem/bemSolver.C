@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <ctime>
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
@@ -989,6 +990,26 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
 
     computeOutputs();
     return info_;
+}
+
+
+Foam::scalar Foam::bemSolver::matvecCpuTime(const label nRepeat) const
+{
+    if (!assembled_)
+    {
+        FatalErrorInFunction
+            << "call solve() first" << exit(FatalError);
+    }
+    std::vector<scalar> t;
+    scalarField y;
+    for (label r = 0; r < max(nRepeat, label(1)); ++r)
+    {
+        const scalar t0 = now();
+        applyA(sigmaB_, y);
+        t.push_back(now() - t0);
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size()/2];
 }
 
 
