@@ -23,6 +23,7 @@
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
+#include "quaternion.H"
 
 #include <gtest/gtest.h>
 
@@ -346,6 +347,70 @@ TEST(bemElectrostatics, TwoProlateSpheroidsOrientation)
     EXPECT_LT(F[2], F[1]);
     EXPECT_LT(F[1], F[0]);
     EXPECT_LT(F[0], 0);
+}
+
+
+TEST(bemElectrostatics, PerPatchFreeChargeSphere)
+{
+    // Free charge sigma_f = s0 cos(t) on a dielectric sphere (no field):
+    // phi_in = A r cos t, phi_out = A R^3 cos t/r^2, eps0 A (kp + 2) = s0,
+    // so sigma_b = -s0 (kp - 1)/(kp + 2) cos t
+    const scalar kp = 10;
+    bemSolver s(1);
+    const label sh = s.shape(vector(1, 1, 1), 1600);
+    const pointField& c = s.mesh(sh).centres();
+    scalarField sf(c.size());
+    forAll(c, i)
+    {
+        sf[i] = c[i].z()/mag(c[i]);
+    }
+    s.addParticle(sh, point::zero, tensor::I, kp, sf);
+    s.solve();
+    const auto sb = s.sigmaB(0);
+    scalar e2 = 0, r2 = 0;
+    forAll(sb, i)
+    {
+        const scalar ex = -sf[i]*(kp - 1)/(kp + 2);
+        e2 += sqr(sb[i] - ex);
+        r2 += sqr(ex);
+    }
+    std::printf("per-patch sigma_f: L2 error of sigma_b %.4f\n", Foam::sqrt(e2/r2));
+    EXPECT_LT(Foam::sqrt(e2/r2), 0.01);
+}
+
+
+TEST(bemElectrostatics, RigidRotationOfConfiguration)
+{
+    // Rotating the whole configuration by Q rotates forces and torques by
+    // Q and leaves the energy unchanged (body-frame shape data, world-frame
+    // assembly). Direct products and a tight tolerance: the axis-aligned
+    // octree is not rotation invariant (differences ~1e-3 with it)
+    const tensor Q =
+        quaternion(vector(1, 2, 3)/Foam::sqrt(14.0), 0.7).R();
+    const tensor R1 = quaternion(vector(0, 1, 1)/Foam::sqrt(2.0), 0.4).R();
+    const tensor R2 = quaternion(vector(1, 0, 0), 1.1).R();
+    vector F[2], M[2];
+    scalar U[2];
+    for (label k = 0; k < 2; ++k)
+    {
+        const tensor T = k ? Q : tensor::I;
+        bemSolverControls c;
+        c.matvec = bemMatvecMethod::direct;
+        c.tolerance = 1e-10;
+        bemSolver s(1, c);
+        const label sh = s.shape(vector(2, 1, 0.8), 600);
+        const scalar A = sum(s.mesh(sh).areas());
+        s.addParticle(sh, T & point(0, 0, 0), T & R1, 10, A);
+        s.addParticle(sh, T & point(4.3, 0.5, 0), T & R2, 5, -0.5*A);
+        s.setExternalField(T & vector(0, 0, 1e10));
+        s.solve();
+        F[k] = s.forces()[1];
+        M[k] = s.torques()[1];
+        U[k] = s.energy();
+    }
+    EXPECT_LT(mag(F[1] - (Q & F[0])), 1e-7*mag(F[0]));
+    EXPECT_LT(mag(M[1] - (Q & M[0])), 1e-7*mag(M[0]));
+    EXPECT_NEAR(U[1]/U[0], 1, 1e-9);
 }
 
 
