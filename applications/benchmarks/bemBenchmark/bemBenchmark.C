@@ -235,7 +235,7 @@ int main(int argc, char *argv[])
         (
             "\n## 4. Accuracy vs cost, Ruan App. A (point charge + sphere,"
             " kappa ratio 10)\n\n"
-            "| d/R | mesh | n | rel. error of U | s/solve (incl. set-up) |\n"
+            "| d/R | mesh | n | rel. error of U | s/solve (incl. meshing and set-up) |\n"
             "|---|---|---|---|---|\n"
         );
         std::vector<label> ns =
