@@ -19,7 +19,7 @@ Description
     sigma_f = 1, tolerance 1e-4, default solver controls (treecode theta
     0.3, quadrupole, leaf 32; curvature self term; near quadrature).
 
-    Usage: bemBenchmark [-quick]
+    Usage: bemBenchmark [-quick] [-section 1|1b|2|3|4]
 
 \*---------------------------------------------------------------------------*/
 
@@ -115,10 +115,17 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::noFunctionObjects();
     argList::addBoolOption("quick", "smaller sizes (a smoke test)");
+    argList::addOption
+    (
+        "section", "name", "run only this section: 1, 1b, 2, 3 or 4"
+    );
     argList args(argc, argv);
     const bool quick = args.found("quick");
+    const word only = args.getOrDefault<word>("section", "");
+    auto section = [&](const char* sec) { return only.empty() || only == sec; };
 
     // 1. patches per particle
+    if (section("1"))
     {
         std::vector<label> ns =
             quick ? std::vector<label>{100, 392, 1000}
@@ -165,7 +172,37 @@ int main(int argc, char *argv[])
         );
     }
 
+    // 1b. larger n, treecode only (the direct sum would take minutes)
+    if (!quick && section("1b"))
+    {
+        std::printf
+        (
+            "\n## 1b. Two spheres, gap 0.5R: treecode only, larger n\n\n"
+            "| n | N | s/matvec (median) | s/iter (GMRES) | s/solve | iters |"
+            "\n|---|---|---|---|---|---|\n"
+        );
+        std::vector<scalar> x, tt;
+        for (const label n : {1600, 5000, 10000, 20000})
+        {
+            const run t = spheres(2, n, 0.5, bemMatvecMethod::treecode, true);
+            std::printf
+            (
+                "| %d | %d | %.3e | %.3e | %.3e | %d |\n", n, 2*n,
+                t.perMatvec, t.perIter, t.perSolve, t.iterations
+            );
+            std::fflush(stdout);
+            x.push_back(n);
+            tt.push_back(t.perMatvec);
+        }
+        std::printf
+        (
+            "\nFitted exponent of the treecode matvec time vs n"
+            " (n = 1600..20000): %.3f\n", slope(x, tt)
+        );
+    }
+
     // 2. particle number
+    if (section("2"))
     {
         std::vector<label> nps =
             quick ? std::vector<label>{2, 5, 10}
@@ -204,6 +241,7 @@ int main(int argc, char *argv[])
     }
 
     // 3. preconditioner
+    if (section("3"))
     {
         std::printf
         (
@@ -229,6 +267,7 @@ int main(int argc, char *argv[])
     }
 
     // 4. accuracy vs cost, App. A
+    if (section("4"))
     {
         const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
         std::printf
