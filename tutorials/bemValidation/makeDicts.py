@@ -8,11 +8,12 @@ os.makedirs("dicts", exist_ok=True)
 HEAD = "FoamFile { version 2.0; format ascii; class dictionary; object bemElectrostaticsDict; }\n"
 
 
-def particle(name, centre, axes, kappa, sigma, n, euler=(0, 0, 0), grading=None, charge=None):
-    g = ""
+def particle(name, centre, axes, kappa, sigma, n, euler=(0, 0, 0), grading=None, charge=None,
+             beta=0):
+    g = "" if beta == 0 else "curvatureGrading %g;" % beta
     q = "sigmaF %g;" % sigma if charge is None else "charge %.16g;" % charge
     if grading:
-        g = "grading { lambda %g; focus (%g %g %g); }" % (grading[0], *grading[1])
+        g += " grading { lambda %g; focus (%g %g %g); }" % (grading[0], *grading[1])
     return ("%s { centre (%g %g %g); orientation { type euler; angles (%g %g %g); }"
             " semiAxes (%g %g %g); kappa %g; %s nPatches %d; %s }\n"
             % (name, *centre, *euler, *axes, kappa, q, n, g))
@@ -28,15 +29,16 @@ def write(name, body, gap0=0.0):
         f.write("%g\n" % gap0)
 
 
-# Torque on a neutral prolate spheroid (Ruan Fig. 8c)
+# Torque on a neutral prolate spheroid (Ruan Fig. 8c); patches refined
+# towards the tips (size ~ H^-0.5)
 s3 = 3 ** -0.5
 for a in ([1, 2, 5, 10] if quick else range(1, 11)):
-    n = max(1000, 400 * a)
+    n = max(1000, 200 * a)
     write("torque_a%02d" % a,
           "kappa0 1; externalField (%.16g %.16g %.16g);\n" % (s3, s3, s3)
           + "models (bem); interactionEnergy no; writeVtk %s;\n" % ("yes" if a in (1, 10) else "no")
           + 'outputDir "postProcessing/torque_a%02d";\n' % a
-          + "particles {\n" + particle("p", (0, 0, 0), (a, 1, 1), 2.5, 0, n) + "}\n")
+          + "particles {\n" + particle("p", (0, 0, 0), (a, 1, 1), 2.5, 0, n, beta=0.5) + "}\n")
 
 # Two charged spheres (Ruan Fig. 7): p2 starts at gap 0.05 R; free charge
 # Q = 4 pi R^2 sigma exactly (sigma_f = Q/meshed area), as in the exact series
@@ -72,7 +74,7 @@ for cfg, (e1, e2, eu1, eu2) in {"headToTail": (2, 2, (0, 0, 0), (0, 0, 0)),
               % ("yes" if sgn < 0 else "no")
               + 'outputDir "postProcessing/%s";\n' % tag
               + "particles {\n"
-              + particle("p1", (0, 0, 0), (2, 1, 1), 10, 1, n, euler=eu1)
-              + particle("p2", (e1 + gaps[0] + e2, 0, 0), (2, 1, 1), 10, sgn, n, euler=eu2)
+              + particle("p1", (0, 0, 0), (2, 1, 1), 10, 1, n, euler=eu1, beta=0.5)
+              + particle("p2", (e1 + gaps[0] + e2, 0, 0), (2, 1, 1), 10, sgn, n, euler=eu2, beta=0.5)
               + "}\nsweep { type translate; particle p2; direction (1 0 0); values (%s); }\n" % vals,
               gaps[0])

@@ -51,11 +51,11 @@ for f in sorted(glob.glob(PP + "/torque_a*/bem.dat")):
     M0 = 4 * math.pi * eps0 / 3
     rows.append((a, M / M0, Mex / M0))
 if rows:
-    print("## Torque on a neutral prolate spheroid, kp 2.5, E0 [1,1,1]/sqrt(3) (Ruan Fig. 8c)")
+    print("## Torque on a neutral prolate spheroid, kp 2.5, E0 [1,1,1]/sqrt(3) (Ruan Fig. 8c); curvature-graded meshes (size ~ H^-0.5)")
     print("| a | n | My/M0 BEM | Eq. 49 | rel. err | Mz/M0 BEM | Eq. 49 | rel. err | |Mx|/|M| |")
     print("|---|---|---|---|---|---|---|---|---|")
     for a, M, Mex in rows:
-        n = max(1000, 400 * a)
+        n = max(1000, 200 * a)
         ey = M[1] / Mex[1] - 1 if a > 1 else float("nan")
         ez = M[2] / Mex[2] - 1 if a > 1 else float("nan")
         print("| %d | %d | %.5f | %.5f | %+.4f | %.5f | %.5f | %+.4f | %.1e |"

@@ -52,6 +52,7 @@ struct particleSpec
     label nPatches;
     scalar lambda;
     vector focus;
+    scalar beta;
 };
 
 
@@ -128,6 +129,14 @@ particleSpec readParticle(const word& name, const dictionary& pd)
         FatalIOErrorInFunction(pd)
             << "nPatches " << p.nPatches << " of " << name
             << " out of range [8, 200000]" << exit(FatalIOError);
+    }
+    p.beta = pd.getOrDefault<scalar>("curvatureGrading", 0);
+    if (!(p.beta >= 0 && p.beta <= 1))
+    {
+        FatalIOErrorInFunction(pd)
+            << "curvatureGrading " << p.beta << " of " << name
+            << " out of range [0, 1] (patch size ~ H^-beta)"
+            << exit(FatalIOError);
     }
     p.lambda = 1;
     p.focus = vector(1, 0, 0);
@@ -367,7 +376,7 @@ int main(int argc, char *argv[])
         {
             const particleSpec& p = parts[i];
             shapes[i] =
-                bem.shape(p.semiAxes, p.nPatches, p.focus, p.lambda);
+                bem.shape(p.semiAxes, p.nPatches, p.focus, p.lambda, p.beta);
             const scalar A = sum(bem.mesh(shapes[i]).areas());
             charge[i] = p.hasCharge ? p.charge : p.sigmaF*A;
         }
@@ -383,7 +392,7 @@ int main(int argc, char *argv[])
                 const label sh = one.shape
                 (
                     parts[i].semiAxes, parts[i].nPatches, parts[i].focus,
-                    parts[i].lambda
+                    parts[i].lambda, parts[i].beta
                 );
                 one.addParticle(sh, parts[i].centre, parts[i].R, parts[i].kappa, charge[i]);
                 one.solve();

@@ -690,7 +690,8 @@ Foam::label Foam::bemSolver::shape
     const vector& semiAxes,
     const label nPatches,
     const vector& focus,
-    const scalar lambda
+    const scalar lambda,
+    const scalar beta
 )
 {
     const label nEven = nPatches + (nPatches % 2);
@@ -702,6 +703,7 @@ Foam::label Foam::bemSolver::shape
         (
             m.semiAxes() == semiAxes && m.size() == nEven
          && m.lambda() == lambda && (lambda == 1 || m.focus() == f)
+         && m.beta() == beta
         )
         {
             return s;
@@ -710,13 +712,19 @@ Foam::label Foam::bemSolver::shape
     std::unique_ptr<shapeData> sd(new shapeData);
     if (lambda == 1)
     {
-        sd->mesh.reset(new ellipsoidSurfaceMesh(semiAxes, nPatches));
+        sd->mesh.reset
+        (
+            new ellipsoidSurfaceMesh(semiAxes, nPatches, 40, beta)
+        );
     }
     else
     {
         sd->mesh.reset
         (
-            new ellipsoidSurfaceMesh(semiAxes, nPatches, focus, lambda)
+            new ellipsoidSurfaceMesh
+            (
+                semiAxes, nPatches, focus, lambda, 40, beta
+            )
         );
     }
     buildNearBody(*sd);

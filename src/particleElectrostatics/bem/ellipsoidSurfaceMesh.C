@@ -322,6 +322,13 @@ Foam::ellipsoidSurfaceMesh::convexHull(const UList<point>& pts)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
+Foam::scalar Foam::ellipsoidSurfaceMesh::sizeAt(const point& x) const
+{
+    // Relative patch size h ~ H^-beta (finer where the surface is curved)
+    return beta_ == 0 ? 1 : std::pow(meanCurvature(semiAxes_, x), -beta_);
+}
+
+
 void Foam::ellipsoidSurfaceMesh::generatePoints(const label nV)
 {
     // Longest axis L carries the poles; rings in the other two directions
@@ -335,14 +342,24 @@ void Foam::ellipsoidSurfaceMesh::generatePoints(const label nV)
     const scalar Pbc =
         pi*(3*(b + c) - Foam::sqrt((3*b + c)*(b + 3*c)));
 
-    // Meridian arc length table s(t), t in [0, pi]
+    // Meridian table of the stretched length u(t) = int ds/h, t in [0, pi]
+    // (h = 1: arc length)
     const label nt = 4000;
     std::vector<scalar> st(nt + 1, 0.0);
+    auto meridianPoint = [&](scalar t)
+    {
+        point p(Zero);
+        p[L] = a*Foam::cos(t);
+        p[i1] = re*Foam::sin(t);
+        return project(s, p);
+    };
+    auto hOfT = [&](scalar t) { return sizeAt(meridianPoint(t)); };
     for (label i = 1; i <= nt; ++i)
     {
         const scalar t = (i - 0.5)*pi/nt;
         st[i] = st[i - 1]
-          + Foam::sqrt(sqr(a*Foam::sin(t)) + sqr(re*Foam::cos(t)))*pi/nt;
+          + Foam::sqrt(sqr(a*Foam::sin(t)) + sqr(re*Foam::cos(t)))*pi/nt
+           /hOfT(t);
     }
     const scalar S = st[nt];
     auto tOfS = [&](scalar sv)
@@ -368,7 +385,10 @@ void Foam::ellipsoidSurfaceMesh::generatePoints(const label nV)
             ringM[k] = max
             (
                 label(3),
-                label(std::round(Foam::sin(ringT[k])*Pbc/h))
+                label
+                (
+                    std::round(Foam::sin(ringT[k])*Pbc/(h*hOfT(ringT[k])))
+                )
             );
             cnt += ringM[k];
         }
@@ -376,7 +396,7 @@ void Foam::ellipsoidSurfaceMesh::generatePoints(const label nV)
     };
 
     const scalar Aapprox = surfaceArea(s);
-    scalar h = Foam::sqrt(2*Aapprox/(Foam::sqrt(3.0)*nV));
+    scalar h = Foam::sqrt(2*Aapprox/(Foam::sqrt(3.0)*nV))/hOfT(0.5*pi);
     for (label it = 0; it < 20; ++it)
     {
         const label cnt = layout(h);
@@ -392,7 +412,8 @@ void Foam::ellipsoidSurfaceMesh::generatePoints(const label nV)
         scalar bestVal = 0;
         for (size_t k = 0; k < ringM.size(); ++k)
         {
-            const scalar spacing = Foam::sin(ringT[k])*Pbc/ringM[k];
+            const scalar spacing =
+                Foam::sin(ringT[k])*Pbc/ringM[k]/hOfT(ringT[k]);
             const scalar val = (cnt < nV) ? spacing : -spacing;
             if (cnt > nV && ringM[k] <= 3) continue;
             if (best < 0 || val > bestVal) { best = k; bestVal = val; }
@@ -518,6 +539,7 @@ void Foam::ellipsoidSurfaceMesh::relax(const label nIter)
     // Connectivity: hull once, then edge flips every step.
     const label nV = points_.size();
     std::vector<std::pair<label, label>> bars;
+    std::vector<scalar> hBar;
     vectorField force(nV);
     const scalar dt = 0.2;
 
@@ -535,18 +557,32 @@ void Foam::ellipsoidSurfaceMesh::relax(const label nIter)
                 if (a < b) bars.push_back({a, b});
             }
         }
-        scalar sumL2 = 0;
-        for (const auto& e : bars)
+        scalar sumL2 = 0, sumH2 = 0;
+        hBar.resize(bars.size());
+        for (size_t b = 0; b < bars.size(); ++b)
         {
+            const auto& e = bars[b];
             sumL2 += magSqr(points_[e.first] - points_[e.second]);
+            hBar[b] =
+                beta_ == 0 ? 1
+              : sizeAt
+                (
+                    project
+                    (
+                        semiAxes_,
+                        0.5*(points_[e.first] + points_[e.second])
+                    )
+                );
+            sumH2 += sqr(hBar[b]);
         }
-        const scalar L0 = 1.2*Foam::sqrt(sumL2/bars.size());
+        const scalar L0 = 1.2*Foam::sqrt(sumL2/sumH2);
         force = Zero;
-        for (const auto& e : bars)
+        for (size_t b = 0; b < bars.size(); ++b)
         {
+            const auto& e = bars[b];
             const vector d = points_[e.first] - points_[e.second];
             const scalar Lb = mag(d);
-            const scalar Fb = max(L0 - Lb, scalar(0));
+            const scalar Fb = max(L0*hBar[b] - Lb, scalar(0));
             const vector fv = Fb*d/max(Lb, VSMALL);
             force[e.first] += fv;
             force[e.second] -= fv;
@@ -660,12 +696,14 @@ Foam::ellipsoidSurfaceMesh::ellipsoidSurfaceMesh
     const label nPatches,
     const vector& focus,
     const scalar lambda,
-    const label nRelax
+    const label nRelax,
+    const scalar beta
 )
 :
     semiAxes_(semiAxes),
     focus_(focus/max(mag(focus), VSMALL)),
-    lambda_(lambda)
+    lambda_(lambda),
+    beta_(beta)
 {
     if (!(lambda > 0 && lambda <= 1) || mag(focus) < VSMALL)
     {
@@ -685,18 +723,26 @@ Foam::ellipsoidSurfaceMesh::ellipsoidSurfaceMesh
 (
     const vector& semiAxes,
     const label nPatches,
-    const label nRelax
+    const label nRelax,
+    const scalar beta
 )
 :
     semiAxes_(semiAxes),
     focus_(1, 0, 0),
-    lambda_(1)
+    lambda_(1),
+    beta_(beta)
 {
     if (cmptMin(semiAxes) <= 0 || !std::isfinite(cmptMax(semiAxes)))
     {
         FatalErrorInFunction
             << "semiAxes " << semiAxes << " out of range: all must be > 0"
             << exit(FatalError);
+    }
+    if (!(beta >= 0 && beta <= 1))
+    {
+        FatalErrorInFunction
+            << "curvature grading exponent beta = " << beta
+            << " out of range [0, 1]" << exit(FatalError);
     }
     if (nPatches < 8 || nPatches > 200000)
     {

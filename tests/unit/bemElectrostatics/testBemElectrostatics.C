@@ -29,6 +29,8 @@
 
 #include <cstdio>
 #include <random>
+#include <tuple>
+#include <vector>
 
 using namespace Foam;
 using constant::mathematical::pi;
@@ -291,11 +293,19 @@ TEST(bemElectrostatics, ProlateSpheroidTorqueEq49)
     const scalar kp = 2.5;
     const vector E0 = vector(1, 1, 1)/Foam::sqrt(3.0);
     const scalar M0 = 4*pi*eps0/3;   // 4 pi eps0 b^3 E0^2/3
-    for (const auto& an : {std::pair<scalar, label>(2, 1000), {5, 2000}})
+    // (a, n, curvature grading beta): uniform meshes, and a = 10 with
+    // patches refined towards the tips (uniform a = 10 needs 4000 patches)
+    const std::vector<std::tuple<scalar, label, scalar>> cases =
+        {{2, 1000, 0}, {5, 2000, 0}, {10, 2000, 0.5}};
+    for (const auto& c : cases)
     {
-        const scalar a = an.first;
+        const scalar a = std::get<0>(c);
+        const label n = std::get<1>(c);
         bemSolver s(1);
-        const label sh = s.shape(vector(a, 1, 1), an.second);
+        const label sh = s.shape
+        (
+            vector(a, 1, 1), n, vector(1, 0, 0), 1, std::get<2>(c)
+        );
         s.addParticle(sh, point::zero, tensor::I, kp, 0.0);
         s.setExternalField(E0);
         s.solve();
@@ -305,8 +315,9 @@ TEST(bemElectrostatics, ProlateSpheroidTorqueEq49)
         const vector Mex = (alpha & E0) ^ E0;      // Eq. 49
         std::printf
         (
-            "prolate a %g n %d: M/M0 BEM (%.5f %.5f %.5f) Eq.49 (%.5f %.5f"
-            " %.5f)\n", a, an.second, M.x()/M0, M.y()/M0, M.z()/M0,
+            "prolate a %g n %d beta %g: M/M0 BEM (%.5f %.5f %.5f) Eq.49"
+            " (%.5f %.5f %.5f)\n", a, n, std::get<2>(c), M.x()/M0, M.y()/M0,
+            M.z()/M0,
             Mex.x()/M0, Mex.y()/M0, Mex.z()/M0
         );
         EXPECT_NEAR(M.y()/Mex.y(), 1, 0.02);

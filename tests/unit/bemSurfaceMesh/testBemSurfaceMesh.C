@@ -115,6 +115,33 @@ TEST(bemSurfaceMesh, QualityNearEqualAreas)
 }
 
 
+TEST(bemSurfaceMesh, CurvatureGrading)
+{
+    // Patch size ~ H^-beta: on a prolate a = 5 the tips (H = a/b^2 = 5)
+    // get smaller patches than the equator (H = 0.52); still a closed,
+    // well-shaped triangulation of the whole surface
+    const vector s(5, 1, 1);
+    ellipsoidSurfaceMesh m(s, 2000, 40, 0.5);
+    m.writeQuality(Info);
+    EXPECT_EQ(m.size(), 2000);
+    checkClosed(m);
+    const auto q = m.quality();
+    EXPECT_NEAR(q.totalArea/q.exactArea, 1, 1.0/2000);
+    EXPECT_GT(q.angleMin, 20);
+    EXPECT_LT(q.angleMax, 120);
+    scalar at = 0, ae = 0;
+    label nt = 0, ne = 0;
+    forAll(m.centres(), i)
+    {
+        const scalar x = m.centres()[i].x();
+        if (x > 0.95*s.x()) { at += m.areas()[i]; ++nt; }
+        if (mag(x) < 0.1*s.x()) { ae += m.areas()[i]; ++ne; }
+    }
+    // Expected ratio (5/0.52)^(2 beta) ~ 9.6; ask for more than 3
+    EXPECT_LT(3*at/nt, ae/ne);
+}
+
+
 TEST(bemSurfaceMesh, CurvatureOfSpheroid)
 {
     // Prolate spheroid (a, b, b): H = a/b^2 at the tip and
