@@ -1,0 +1,1066 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "bemSolver.H"
+#include "pairwiseCoulomb.H"
+#include "mathematicalConstants.H"
+#include "error.H"
+
+#include <Eigen/Dense>
+
+#include <ctime>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+using Foam::constant::mathematical::pi;
+
+struct Foam::bemSolver::luBlock
+{
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+};
+
+namespace
+{
+
+// Thread CPU time [s]: the solver is single-threaded, and CPU time is not
+// inflated by other processes on a shared machine
+double now()
+{
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9*ts.tv_nsec;
+}
+
+} // namespace
+
+
+// * * * * * * * * * * * * * * * * Controls  * * * * * * * * * * * * * * * * //
+
+Foam::bemSolverControls Foam::bemSolverControls::read
+(
+    const dictionary& dict
+)
+{
+    bemSolverControls c;
+    dict.readIfPresent("tolerance", c.tolerance);
+    dict.readIfPresent("maxIter", c.maxIter);
+    dict.readIfPresent("restart", c.restart);
+    dict.readIfPresent("theta", c.theta);
+    dict.readIfPresent("order", c.order);
+    dict.readIfPresent("leafSize", c.leafSize);
+    dict.readIfPresent("precondition", c.precondition);
+    dict.readIfPresent("maxPreconditionerPatches", c.maxPreconditionerPatches);
+    dict.readIfPresent("nearQuadrature", c.nearQuadrature);
+    dict.readIfPresent("nearFactor", c.nearFactor);
+    dict.readIfPresent("chargeConservation", c.chargeConservation);
+    dict.readIfPresent("directOutputMax", c.directOutputMax);
+
+    word w;
+    if (dict.readIfPresent("matvec", w))
+    {
+        if (w == "direct") c.matvec = bemMatvecMethod::direct;
+        else if (w == "treecode") c.matvec = bemMatvecMethod::treecode;
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "matvec " << w << " unknown; allowed: direct treecode"
+                << exit(FatalIOError);
+        }
+    }
+    if (dict.readIfPresent("selfTerm", w))
+    {
+        if (w == "zero") c.selfTerm = bemSelfTermModel::zero;
+        else if (w == "curvature") c.selfTerm = bemSelfTermModel::curvature;
+        else if (w == "gauss") c.selfTerm = bemSelfTermModel::gauss;
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "selfTerm " << w << " unknown; allowed: gauss curvature zero"
+                << exit(FatalIOError);
+        }
+    }
+    if (!(c.tolerance > 0 && c.tolerance < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "tolerance " << c.tolerance << " out of range (0, 1)"
+            << exit(FatalIOError);
+    }
+    if (c.maxIter < 1 || c.restart < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxIter " << c.maxIter << " and restart " << c.restart
+            << " must be >= 1" << exit(FatalIOError);
+    }
+    if (!(c.theta > 0 && c.theta <= 1) || c.order < 0 || c.order > 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "theta " << c.theta << " must be in (0, 1] and order "
+            << c.order << " in [0, 2]" << exit(FatalIOError);
+    }
+    if (!(c.nearFactor >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "nearFactor " << c.nearFactor << " must be >= 0"
+            << exit(FatalIOError);
+    }
+    return c;
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+void Foam::bemSolver::nearCorrection
+(
+    const point& x,
+    const pointField& qp,
+    const scalarField& qw,
+    const label j0,
+    const point& xj,
+    const scalar aj,
+    vector& V,
+    scalar& P
+) const
+{
+    // Quadrature over the curved source patch minus its centroid rule
+    const scalar c4pi = 1/(4*pi);
+    V = Zero;
+    P = 0;
+    for (label q = 0; q < ellipsoidSurfaceMesh::nQuad; ++q)
+    {
+        const vector d = x - qp[j0 + q];
+        const scalar r = mag(d);
+        V += (qw[j0 + q]/(r*r*r))*d;
+        P += qw[j0 + q]/r;
+    }
+    const vector d = x - xj;
+    const scalar r = mag(d);
+    V -= (aj/(r*r*r))*d;
+    P -= aj/r;
+    V *= c4pi;
+    P *= c4pi;
+}
+
+
+void Foam::bemSolver::assemble()
+{
+    const scalar t0 = now();
+    const label np = particles_.size();
+    offset_.setSize(np + 1);
+    offset_[0] = 0;
+    for (label p = 0; p < np; ++p)
+    {
+        offset_[p + 1] = offset_[p] + mesh(particles_[p].shape).size();
+    }
+    const label N = offset_[np];
+    x_.setSize(N);
+    n_.setSize(N);
+    a_.setSize(N);
+    owner_.setSize(N);
+    kbar_.setSize(N);
+    dk_.setSize(N);
+    selfK_.setSize(N);
+    selfP_.setSize(N);
+    near_.assign(N, std::vector<nearEntry>());
+
+    for (auto& sd : shapes_)
+    {
+        if
+        (
+            sd->nearFactor != ctrl_.nearFactor
+         || sd->nearQuad != ctrl_.nearQuadrature
+        )
+        {
+            buildNearBody(*sd);
+        }
+    }
+
+    scalar hmax = 0;
+    for (label p = 0; p < np; ++p)
+    {
+        const particle& pt = particles_[p];
+        const shapeData& sd = *shapes_[pt.shape];
+        const ellipsoidSurfaceMesh& m = *sd.mesh;
+        for (label k = 0; k < m.size(); ++k)
+        {
+            const label i = offset_[p] + k;
+            x_[i] = pt.centre + (pt.R & m.centres()[k]);
+            n_[i] = pt.R & m.normals()[k];
+            a_[i] = m.areas()[k];
+            owner_[i] = p;
+            kbar_[i] = 0.5*(pt.kappaP + kappa0_);
+            dk_[i] = kappa0_ - pt.kappaP;
+            selfK_[i] =
+                ctrl_.selfTerm == selfTermModel::curvature
+              ? m.meanCurvatures()[k]*m.selfJ()[k]/(8*pi)
+              : ctrl_.selfTerm == selfTermModel::gauss
+              ? sd.selfGauss[k]
+              : 0;
+            selfP_[i] = m.selfJ()[k]/(4*pi);
+            hmax = max(hmax, Foam::sqrt(a_[i]));
+            if (ctrl_.nearQuadrature)
+            {
+                for (const nearEntry& e : sd.nearBody[k])
+                {
+                    nearEntry w = e;
+                    w.j = offset_[p] + e.j;
+                    w.V = pt.R & e.V;
+                    near_[i].push_back(w);
+                }
+            }
+        }
+    }
+
+    // Near pairs between different particles: hash grid on the centres
+    if (ctrl_.nearQuadrature && np > 1 && ctrl_.nearFactor > 0)
+    {
+        const scalar h = ctrl_.nearFactor*hmax;
+        auto cellOf = [h](const point& p)
+        {
+            return FixedList<long long, 3>
+            ({
+                static_cast<long long>(std::floor(p.x()/h)),
+                static_cast<long long>(std::floor(p.y()/h)),
+                static_cast<long long>(std::floor(p.z()/h))
+            });
+        };
+        auto key = [](long long i, long long j, long long k)
+        {
+            return (i*73856093LL) ^ (j*19349663LL) ^ (k*83492791LL);
+        };
+        std::unordered_multimap<long long, label> grid;
+        grid.reserve(N);
+        for (label i = 0; i < N; ++i)
+        {
+            const auto c = cellOf(x_[i]);
+            grid.insert({key(c[0], c[1], c[2]), i});
+        }
+        pointField qpw(ellipsoidSurfaceMesh::nQuad);
+        for (label j = 0; j < N; ++j)
+        {
+            const particle& pj = particles_[owner_[j]];
+            const ellipsoidSurfaceMesh& mj = mesh(pj.shape);
+            const label kj = j - offset_[owner_[j]];
+            const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
+            bool haveQp = false;
+            const auto c = cellOf(x_[j]);
+            for (long long di = -1; di <= 1; ++di)
+            for (long long dj = -1; dj <= 1; ++dj)
+            for (long long dl = -1; dl <= 1; ++dl)
+            {
+                const auto range =
+                    grid.equal_range(key(c[0] + di, c[1] + dj, c[2] + dl));
+                for (auto it = range.first; it != range.second; ++it)
+                {
+                    const label i = it->second;
+                    if (owner_[i] == owner_[j]) continue;
+                    if (magSqr(x_[i] - x_[j]) >= sqr(rj)) continue;
+                    // hash collisions can repeat a pair: check cell
+                    const auto ci = cellOf(x_[i]);
+                    if
+                    (
+                        ci[0] != c[0] + di || ci[1] != c[1] + dj
+                     || ci[2] != c[2] + dl
+                    )
+                    {
+                        continue;
+                    }
+                    if (!haveQp)
+                    {
+                        for (label q = 0; q < ellipsoidSurfaceMesh::nQuad; ++q)
+                        {
+                            qpw[q] = pj.centre
+                              + (pj.R & mj.quadPoints()
+                                    [ellipsoidSurfaceMesh::nQuad*kj + q]);
+                        }
+                        haveQp = true;
+                    }
+                    nearEntry e;
+                    e.j = j;
+                    scalarField qw
+                    (
+                        SubList<scalar>
+                        (
+                            mj.quadWeights(), ellipsoidSurfaceMesh::nQuad,
+                            ellipsoidSurfaceMesh::nQuad*kj
+                        )
+                    );
+                    nearCorrection(x_[i], qpw, qw, 0, x_[j], a_[j], e.V, e.P);
+                    near_[i].push_back(e);
+                }
+            }
+        }
+    }
+
+    // Fast sum
+    tree_.reset();
+    if (ctrl_.matvec == matvecMethod::treecode)
+    {
+        tree_.reset
+        (
+            new bemTreecode
+            (
+                x_, ctrl_.theta, ctrl_.order, ctrl_.leafSize, owner_
+            )
+        );
+    }
+
+    // Block preconditioner: once per (shape, kappaP, kappa0), body frame
+    blockLU_.assign(np, nullptr);
+    if (ctrl_.precondition)
+    {
+        for (label p = 0; p < np; ++p)
+        {
+            const particle& pt = particles_[p];
+            shapeData& sd = *shapes_[pt.shape];
+            const ellipsoidSurfaceMesh& m = *sd.mesh;
+            const label n = m.size();
+            if (n > ctrl_.maxPreconditionerPatches) continue;
+            const std::pair<scalar, scalar> key(pt.kappaP, kappa0_);
+            std::shared_ptr<luBlock> found;
+            for (const auto& e : sd.lu)
+            {
+                if (e.first == key) found = e.second;
+            }
+            if (!found)
+            {
+                const scalar kb = 0.5*(pt.kappaP + kappa0_);
+                const scalar dkp = kappa0_ - pt.kappaP;
+                Eigen::MatrixXd A(n, n);
+                for (label i = 0; i < n; ++i)
+                {
+                    const point& xi = m.centres()[i];
+                    const vector& ni = m.normals()[i];
+                    for (label j = 0; j < n; ++j)
+                    {
+                        if (i == j)
+                        {
+                            A(i, j) = kb + dkp*selfK_[offset_[p] + i];
+                            continue;
+                        }
+                        const vector d = xi - m.centres()[j];
+                        const scalar r = mag(d);
+                        A(i, j) = dkp*m.areas()[j]*(ni & d)/(4*pi*r*r*r);
+                    }
+                    if (ctrl_.nearQuadrature)
+                    {
+                        for (const nearEntry& e : sd.nearBody[i])
+                        {
+                            A(i, e.j) += dkp*(ni & e.V);
+                        }
+                    }
+                }
+                if (ctrl_.chargeConservation)
+                {
+                    // Same rank-one flux correction as applyK, on
+                    // K = (A - kbar I)/dkappa
+                    scalar Ap = 0;
+                    for (label i = 0; i < n; ++i) Ap += m.areas()[i];
+                    for (label j = 0; j < n; ++j)
+                    {
+                        scalar flux = 0;
+                        for (label i = 0; i < n; ++i)
+                        {
+                            flux += m.areas()[i]
+                              *(A(i, j) - (i == j ? kb : 0));
+                        }
+                        const scalar c =
+                            (flux - dkp*0.5*m.areas()[j])/Ap;
+                        for (label i = 0; i < n; ++i)
+                        {
+                            A(i, j) -= c;
+                        }
+                    }
+                }
+                found = std::make_shared<luBlock>();
+                found->lu.compute(A);
+                sd.lu.push_back({key, found});
+            }
+            blockLU_[p] = found;
+        }
+    }
+
+    assembled_ = true;
+    info_.setupTime = now() - t0;
+}
+
+
+void Foam::bemSolver::applyK(const scalarField& x, scalarField& y) const
+{
+    const label N = x_.size();
+    scalarField q(a_*x);
+    vectorField E;
+    if (tree_)
+    {
+        tree_->evaluate(q, x_, true, E, nullptr);
+    }
+    else
+    {
+        bemTreecode::direct(x_, q, x_, true, E, nullptr);
+    }
+    y.setSize(N);
+    for (label i = 0; i < N; ++i)
+    {
+        vector Ei = E[i];
+        for (const nearEntry& e : near_[i])
+        {
+            Ei += x[e.j]*e.V;
+        }
+        y[i] = (n_[i] & Ei) + selfK_[i]*x[i];
+    }
+    if (ctrl_.chargeConservation)
+    {
+        // Gauss: the flux of the particle's own charge through its surface
+        // is half of it (principal value), that of all other charges zero
+        for (label p = 0; p < label(particles_.size()); ++p)
+        {
+            scalar flux = 0, Q = 0, A = 0;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                flux += a_[i]*y[i];
+                Q += a_[i]*x[i];
+                A += a_[i];
+            }
+            const scalar c = (flux - 0.5*Q)/A;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                y[i] -= c;
+            }
+        }
+    }
+}
+
+
+void Foam::bemSolver::applyA(const scalarField& x, scalarField& y) const
+{
+    applyK(x, y);
+    y = kbar_*x + dk_*y;
+}
+
+
+void Foam::bemSolver::applyPrecond(const scalarField& x, scalarField& y) const
+{
+    y.setSize(x.size());
+    for (label p = 0; p < label(particles_.size()); ++p)
+    {
+        const label b = offset_[p], n = offset_[p + 1] - offset_[p];
+        if (blockLU_[p])
+        {
+            Eigen::Map<const Eigen::VectorXd> xv(x.cdata() + b, n);
+            Eigen::Map<Eigen::VectorXd> yv(y.data() + b, n);
+            yv = blockLU_[p]->lu.solve(xv);
+        }
+        else
+        {
+            for (label i = b; i < b + n; ++i)
+            {
+                y[i] = x[i]/(kbar_[i] + dk_[i]*selfK_[i]);
+            }
+        }
+    }
+}
+
+
+void Foam::bemSolver::computeOutputs()
+{
+    const label N = x_.size();
+    const label np = particles_.size();
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    const scalar c4pi = 1/(4*pi);
+
+    scalarField sigmaT(N), sigmaFall(N);
+    for (label p = 0; p < np; ++p)
+    {
+        for (label k = 0; k < offset_[p + 1] - offset_[p]; ++k)
+        {
+            sigmaFall[offset_[p] + k] = particles_[p].sigmaF[k];
+        }
+    }
+    sigmaT = sigmaFall + sigmaB_;
+    const scalarField q(a_*sigmaT);
+
+    // eps0 E of all other particles' surface charges, eps0 psi of all
+    vectorField E(N, Zero);
+    scalarField phi(N, Zero);
+    if (tree_ && N > ctrl_.directOutputMax)
+    {
+        // Field of the other particles (exact exclusion), potential of all
+        vectorField Eall;
+        tree_->evaluate(q, x_, true, Eall, &phi);
+        tree_->evaluateOthers(q, E, nullptr);
+    }
+    else
+    {
+        for (label i = 0; i < N; ++i)
+        {
+            vector Ei(Zero);
+            scalar pi_ = 0;
+            for (label j = 0; j < N; ++j)
+            {
+                if (j == i) continue;
+                const vector d = x_[i] - x_[j];
+                const scalar r = mag(d);
+                pi_ += q[j]/r;
+                if (owner_[j] != owner_[i])
+                {
+                    Ei += (q[j]/(r*r*r))*d;
+                }
+            }
+            E[i] = c4pi*Ei;
+            phi[i] = c4pi*pi_;
+        }
+    }
+    for (label i = 0; i < N; ++i)
+    {
+        for (const nearEntry& e : near_[i])
+        {
+            phi[i] += sigmaT[e.j]*e.P;
+            if (owner_[e.j] != owner_[i])
+            {
+                E[i] += sigmaT[e.j]*e.V;
+            }
+        }
+        phi[i] += selfP_[i]*sigmaT[i];
+        forAll(pcX_, k)
+        {
+            const vector d = x_[i] - pcX_[k];
+            const scalar r = mag(d);
+            E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
+            phi[i] += c4pi*pcQ_[k]/kappa0_/r;
+        }
+    }
+
+    force_.setSize(np);
+    torque_.setSize(np);
+    energy_ = 0;
+    for (label p = 0; p < np; ++p)
+    {
+        vector F(Zero), M(Zero);
+        for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+        {
+            vector Ei = E[i]/eps0;
+            if (Eext_)
+            {
+                Ei += Eext_(x_[i]);
+            }
+            const vector dF = kappa0_*q[i]*Ei;      // Eq. 11a
+            F += dF;
+            M += (x_[i] - particles_[p].centre) ^ dF; // Eq. 11b
+            energy_ += 0.5*a_[i]*sigmaFall[i]*phi[i]/eps0;   // Eq. 51
+        }
+        force_[p] = F;
+        torque_[p] = M;
+    }
+
+    // Free point charges: 1/2 q psi(x_k), near patches by quadrature
+    forAll(pcX_, k)
+    {
+        scalar psi = 0;
+        for (label j = 0; j < N; ++j)
+        {
+            const scalar r = mag(pcX_[k] - x_[j]);
+            if
+            (
+                ctrl_.nearQuadrature
+             && r < max(ctrl_.nearFactor, scalar(2))*Foam::sqrt(a_[j])
+            )
+            {
+                const particle& pj = particles_[owner_[j]];
+                const ellipsoidSurfaceMesh& mj = mesh(pj.shape);
+                const label kj = j - offset_[owner_[j]];
+                for (label qi = 0; qi < ellipsoidSurfaceMesh::nQuad; ++qi)
+                {
+                    const label l = ellipsoidSurfaceMesh::nQuad*kj + qi;
+                    const point y = pj.centre + (pj.R & mj.quadPoints()[l]);
+                    psi += sigmaT[j]*mj.quadWeights()[l]/mag(pcX_[k] - y);
+                }
+            }
+            else
+            {
+                psi += q[j]/r;
+            }
+        }
+        forAll(pcX_, l)
+        {
+            if (l != k)
+            {
+                psi += pcQ_[l]/kappa0_/mag(pcX_[k] - pcX_[l]);
+            }
+        }
+        energy_ += 0.5*pcQ_[k]*c4pi*psi/eps0;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bemSolver::bemSolver(const scalar kappa0, const controls& c)
+:
+    ctrl_(c),
+    kappa0_(kappa0),
+    assembled_(false),
+    energy_(0)
+{
+    if (!(kappa0 >= 1) || !std::isfinite(kappa0))
+    {
+        FatalErrorInFunction
+            << "kappa0 = " << kappa0 << " out of range: finite and >= 1"
+            << exit(FatalError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bemSolver::buildNearBody(shapeData& sd) const
+{
+    const ellipsoidSurfaceMesh& m = *sd.mesh;
+    const label n = m.size();
+    sd.nearFactor = ctrl_.nearFactor;
+    sd.lu.clear();
+    sd.nearBody.assign(n, std::vector<nearEntry>());
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            if (j == i) continue;
+            const scalar rj = ctrl_.nearFactor*Foam::sqrt(m.areas()[j]);
+            if (magSqr(m.centres()[i] - m.centres()[j]) >= sqr(rj)) continue;
+            nearEntry e;
+            e.j = j;
+            nearCorrection
+            (
+                m.centres()[i], m.quadPoints(), m.quadWeights(),
+                ellipsoidSurfaceMesh::nQuad*j, m.centres()[j], m.areas()[j],
+                e.V, e.P
+            );
+            sd.nearBody[i].push_back(e);
+        }
+    }
+    sd.nearQuad = ctrl_.nearQuadrature;
+
+    // Gauss self term: K_jj = 1/2 - sum_{i != j} a_i K_ij/a_j
+    sd.selfGauss.setSize(n);
+    sd.selfGauss = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const point& xi = m.centres()[i];
+        const vector& ni = m.normals()[i];
+        const scalar ai = m.areas()[i];
+        for (label j = 0; j < n; ++j)
+        {
+            if (j == i) continue;
+            const vector d = xi - m.centres()[j];
+            const scalar r = mag(d);
+            sd.selfGauss[j] += ai*m.areas()[j]*(ni & d)/(4*pi*r*r*r);
+        }
+        if (ctrl_.nearQuadrature)
+        {
+            for (const nearEntry& e : sd.nearBody[i])
+            {
+                sd.selfGauss[e.j] += ai*(ni & e.V);
+            }
+        }
+    }
+    sd.selfGauss = 0.5 - sd.selfGauss/m.areas();
+}
+
+
+Foam::bemSolver::controls& Foam::bemSolver::ctrl()
+{
+    // Controls may change the self blocks: refactorise on the next solve
+    assembled_ = false;
+    for (auto& sd : shapes_)
+    {
+        sd->lu.clear();
+    }
+    return ctrl_;
+}
+
+
+Foam::label Foam::bemSolver::shape(const vector& semiAxes, const label nPatches)
+{
+    return shape(semiAxes, nPatches, vector(1, 0, 0), 1);
+}
+
+
+Foam::label Foam::bemSolver::shape
+(
+    const vector& semiAxes,
+    const label nPatches,
+    const vector& focus,
+    const scalar lambda,
+    const scalar beta
+)
+{
+    const label nEven = nPatches + (nPatches % 2);
+    const vector f = focus/max(mag(focus), VSMALL);
+    for (label s = 0; s < label(shapes_.size()); ++s)
+    {
+        const ellipsoidSurfaceMesh& m = *shapes_[s]->mesh;
+        if
+        (
+            m.semiAxes() == semiAxes && m.size() == nEven
+         && m.lambda() == lambda && (lambda == 1 || m.focus() == f)
+         && m.beta() == beta
+        )
+        {
+            return s;
+        }
+    }
+    std::unique_ptr<shapeData> sd(new shapeData);
+    if (lambda == 1)
+    {
+        sd->mesh.reset
+        (
+            new ellipsoidSurfaceMesh(semiAxes, nPatches, 40, beta)
+        );
+    }
+    else
+    {
+        sd->mesh.reset
+        (
+            new ellipsoidSurfaceMesh
+            (
+                semiAxes, nPatches, focus, lambda, 40, beta
+            )
+        );
+    }
+    buildNearBody(*sd);
+    shapes_.push_back(std::move(sd));
+    return shapes_.size() - 1;
+}
+
+
+Foam::label Foam::bemSolver::addParticle
+(
+    const label shapeI,
+    const point& centre,
+    const tensor& R,
+    const scalar kappaP,
+    const scalar charge
+)
+{
+    const ellipsoidSurfaceMesh& m = mesh(shapeI);
+    return addParticle
+    (
+        shapeI, centre, R, kappaP, scalarField(m.size(), charge/sum(m.areas()))
+    );
+}
+
+
+Foam::label Foam::bemSolver::addParticle
+(
+    const label shapeI,
+    const point& centre,
+    const tensor& R,
+    const scalar kappaP,
+    const scalarField& sigmaF
+)
+{
+    if (shapeI < 0 || shapeI >= label(shapes_.size()))
+    {
+        FatalErrorInFunction << "shape index " << shapeI << " out of range"
+            << exit(FatalError);
+    }
+    if (!(kappaP >= 1) || !std::isfinite(kappaP))
+    {
+        FatalErrorInFunction
+            << "kappaP = " << kappaP << " out of range: finite and >= 1"
+            << exit(FatalError);
+    }
+    if (sigmaF.size() != mesh(shapeI).size())
+    {
+        FatalErrorInFunction
+            << "sigmaF has " << sigmaF.size() << " values for "
+            << mesh(shapeI).size() << " patches" << exit(FatalError);
+    }
+    if (mag(det(R) - 1) > 1e-6 || mag((R & R.T()) - tensor::I) > 1e-6)
+    {
+        FatalErrorInFunction
+            << "rotation tensor " << R << " is not proper orthogonal"
+            << exit(FatalError);
+    }
+    particles_.push_back({shapeI, centre, R, kappaP, sigmaF});
+    assembled_ = false;
+    return particles_.size() - 1;
+}
+
+
+void Foam::bemSolver::setPose(const label i, const point& centre, const tensor& R)
+{
+    particles_[i].centre = centre;
+    particles_[i].R = R;
+    assembled_ = false;
+}
+
+
+void Foam::bemSolver::clearParticles()
+{
+    particles_.clear();
+    pcX_.clear();
+    pcQ_.clear();
+    assembled_ = false;
+}
+
+
+void Foam::bemSolver::addPointCharge(const point& x, const scalar q)
+{
+    pcX_.append(x);
+    pcQ_.append(q);
+    assembled_ = false;
+}
+
+
+void Foam::bemSolver::setExternalField(const vector& E0)
+{
+    Eext_ = [E0](const point&) { return E0; };
+}
+
+
+void Foam::bemSolver::setExternalField(const fieldFunction& f)
+{
+    Eext_ = f;
+}
+
+
+const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
+{
+    if (!assembled_)
+    {
+        assemble();
+    }
+    const label N = x_.size();
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    const scalar c4pi = 1/(4*pi);
+
+    // Right-hand side of Eq. 8
+    scalarField sigmaF(N);
+    for (label p = 0; p < label(particles_.size()); ++p)
+    {
+        for (label k = 0; k < offset_[p + 1] - offset_[p]; ++k)
+        {
+            sigmaF[offset_[p] + k] = particles_[p].sigmaF[k];
+        }
+    }
+    scalarField Kf;
+    applyK(sigmaF, Kf);
+    scalarField b(N), Eext(N);
+    for (label i = 0; i < N; ++i)
+    {
+        scalar En = 0;
+        if (Eext_)
+        {
+            En += eps0*(n_[i] & Eext_(x_[i]));
+        }
+        forAll(pcX_, k)
+        {
+            const vector d = x_[i] - pcX_[k];
+            const scalar r = mag(d);
+            if
+            (
+                ctrl_.nearQuadrature
+             && r < max(ctrl_.nearFactor, scalar(2))*Foam::sqrt(a_[i])
+            )
+            {
+                // Flux through the patch / area
+                const particle& pi_ = particles_[owner_[i]];
+                const ellipsoidSurfaceMesh& mi = mesh(pi_.shape);
+                const label ki = i - offset_[owner_[i]];
+                scalar flux = 0;
+                for (label q = 0; q < ellipsoidSurfaceMesh::nQuad; ++q)
+                {
+                    const label l = ellipsoidSurfaceMesh::nQuad*ki + q;
+                    const point y = pi_.centre + (pi_.R & mi.quadPoints()[l]);
+                    const vector ny = pi_.R
+                      & ellipsoidSurfaceMesh::normal
+                        (
+                            mi.semiAxes(), mi.quadPoints()[l]
+                        );
+                    const vector dy = y - pcX_[k];
+                    const scalar ry = mag(dy);
+                    flux += mi.quadWeights()[l]*(ny & dy)/(ry*ry*ry);
+                }
+                En += c4pi*pcQ_[k]/kappa0_*flux/a_[i];
+            }
+            else
+            {
+                En += c4pi*pcQ_[k]/kappa0_*(n_[i] & d)/(r*r*r);
+            }
+        }
+        Eext[i] = En;
+    }
+    if (ctrl_.chargeConservation)
+    {
+        // Sources outside a particle have zero net flux through it
+        for (label p = 0; p < label(particles_.size()); ++p)
+        {
+            scalar flux = 0, A = 0;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                flux += a_[i]*Eext[i];
+                A += a_[i];
+            }
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                Eext[i] -= flux/A;
+            }
+        }
+    }
+    for (label i = 0; i < N; ++i)
+    {
+        b[i] = (1 - kbar_[i])*sigmaF[i] - dk_[i]*(Kf[i] + Eext[i]);
+    }
+
+    // Restarted GMRES, right preconditioning (Ruan, Eqs. 13-14)
+    const scalar t0 = now();
+    scalar tMv = 0;
+    sigmaB_.setSize(N);
+    sigmaB_ = 0;
+    const scalar bnorm = Foam::sqrt(sum(sqr(b)));
+    info_.iterations = 0;
+    info_.converged = (bnorm == 0);
+    info_.residual = 0;
+    const label m = ctrl_.restart;
+    std::vector<scalarField> V;
+    scalarField r(b), w(N), z(N);
+    scalar beta = bnorm;
+    while (!info_.converged && info_.iterations < ctrl_.maxIter)
+    {
+        V.assign(1, scalarField(r/beta));
+        Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m + 1, m);
+        Eigen::VectorXd g = Eigen::VectorXd::Zero(m + 1);
+        Eigen::VectorXd cs(m), sn(m);
+        g(0) = beta;
+        label j = 0;
+        for (; j < m && info_.iterations < ctrl_.maxIter; ++j)
+        {
+            applyPrecond(V[j], z);
+            const scalar tm = now();
+            applyA(z, w);
+            tMv += now() - tm;
+            ++info_.iterations;
+            for (label i = 0; i <= j; ++i)
+            {
+                H(i, j) = sum(w*V[i]);
+                w -= H(i, j)*V[i];
+            }
+            H(j + 1, j) = Foam::sqrt(sum(sqr(w)));
+            V.push_back(scalarField(w/max(H(j + 1, j), VSMALL)));
+            for (label i = 0; i < j; ++i)
+            {
+                const scalar t = cs(i)*H(i, j) + sn(i)*H(i + 1, j);
+                H(i + 1, j) = -sn(i)*H(i, j) + cs(i)*H(i + 1, j);
+                H(i, j) = t;
+            }
+            const scalar den = Foam::sqrt(sqr(H(j, j)) + sqr(H(j + 1, j)));
+            cs(j) = H(j, j)/den;
+            sn(j) = H(j + 1, j)/den;
+            H(j, j) = den;
+            H(j + 1, j) = 0;
+            g(j + 1) = -sn(j)*g(j);
+            g(j) = cs(j)*g(j);
+            info_.residual = mag(g(j + 1))/bnorm;
+            if (info_.residual < ctrl_.tolerance)
+            {
+                ++j;
+                break;
+            }
+        }
+        // Update x += M^-1 V y
+        Eigen::VectorXd y =
+            H.topLeftCorner(j, j).triangularView<Eigen::Upper>()
+           .solve(g.head(j));
+        scalarField u(N, Zero);
+        for (label i = 0; i < j; ++i)
+        {
+            u += y(i)*V[i];
+        }
+        applyPrecond(u, z);
+        sigmaB_ += z;
+        // True residual
+        applyA(sigmaB_, w);
+        r = b - w;
+        beta = Foam::sqrt(sum(sqr(r)));
+        info_.residual = beta/bnorm;
+        info_.converged = info_.residual < ctrl_.tolerance;
+    }
+    info_.solveTime = now() - t0;
+    info_.matvecTime = tMv;
+    if (!info_.converged)
+    {
+        WarningInFunction
+            << "GMRES not converged: relative residual " << info_.residual
+            << " after " << info_.iterations << " iterations (tolerance "
+            << ctrl_.tolerance << ")" << endl;
+    }
+
+    computeOutputs();
+    return info_;
+}
+
+
+Foam::scalar Foam::bemSolver::matvecCpuTime(const label nRepeat) const
+{
+    if (!assembled_)
+    {
+        FatalErrorInFunction
+            << "call solve() first" << exit(FatalError);
+    }
+    std::vector<scalar> t;
+    scalarField y;
+    for (label r = 0; r < max(nRepeat, label(1)); ++r)
+    {
+        const scalar t0 = now();
+        applyA(sigmaB_, y);
+        t.push_back(now() - t0);
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size()/2];
+}
+
+
+Foam::SubList<Foam::scalar> Foam::bemSolver::sigmaB(const label i) const
+{
+    return SubList<scalar>(sigmaB_, offset_[i + 1] - offset_[i], offset_[i]);
+}
+
+
+Foam::SubList<Foam::point> Foam::bemSolver::centres(const label i) const
+{
+    return SubList<point>(x_, offset_[i + 1] - offset_[i], offset_[i]);
+}
+
+
+Foam::SubList<Foam::vector> Foam::bemSolver::normals(const label i) const
+{
+    return SubList<vector>(n_, offset_[i + 1] - offset_[i], offset_[i]);
+}
+
+
+Foam::pointField Foam::bemSolver::vertices(const label i) const
+{
+    const particle& p = particles_[i];
+    const pointField& pb = mesh(p.shape).points();
+    pointField pw(pb.size());
+    forAll(pb, k)
+    {
+        pw[k] = p.centre + (p.R & pb[k]);
+    }
+    return pw;
+}
+
+
+Foam::scalar Foam::bemSolver::boundCharge(const label i) const
+{
+    scalar Q = 0;
+    for (label k = offset_[i]; k < offset_[i + 1]; ++k)
+    {
+        Q += a_[k]*sigmaB_[k];
+    }
+    return Q;
+}
+
+
+// ************************************************************************* //

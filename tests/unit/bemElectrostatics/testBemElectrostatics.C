@@ -1,0 +1,452 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: validation of the BEM electrostatics kernel (GoogleTest)
+
+    Independent references only:
+      - dielectric sphere in a uniform field: sigma = 3 eps0 E0 K cos(t),
+        K = (kp - 1)/(kp + 2) (textbook);
+      - Ruan 2022 App. A: point charge + neutral dielectric sphere, the image
+        series of Eq. 53 with the corrected factor (R/(R + d))^(2(n+1))
+        (derived in the test comment below, Jackson Sec. 4.4);
+      - two charged spheres with kappa_p = 1: Coulomb's law;
+      - two charged dielectric spheres: mesh refinement (400 vs 1600
+        patches) for the estimated error, monopole-dipole model (Ruan Eqs.
+        45-48) for the trends the paper reports;
+      - neutral prolate spheroid in a uniform field: Eqs. 49-50 with the
+        depolarisation factors by quadrature, themselves checked against the
+        closed form of a prolate spheroid;
+      - treecode against the direct sum.
+\*---------------------------------------------------------------------------*/
+
+#include "bemSolver.H"
+#include "bemTreecode.H"
+#include "inducedDipole.H"
+#include "pairwiseCoulomb.H"
+#include "mathematicalConstants.H"
+#include "IOstreams.H"
+#include "quaternion.H"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+#include <tuple>
+#include <vector>
+
+using namespace Foam;
+using constant::mathematical::pi;
+
+namespace
+{
+
+const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+
+// Point charge q at distance d from the surface of a sphere R, kappa ratio
+// kt, medium kappa_m = 1. Outside potential of the induced charge
+// (Legendre expansion, matching phi and kappa dphi/dr at r = R):
+//   phi_ind = -q/(4 pi eps0) sum_n (kt - 1) n/((kt + 1) n + 1)
+//             R^(2n+1)/(D^(n+1) r^(n+1)) P_n(cos t),   D = R + d,
+// so U = q phi_ind(D)/2, in units of q^2/(eps0 R):
+//   U = -1/(8 pi) sum_n (kt - 1) n/((kt + 1) n + 1) (R/D)^(2n+2)
+scalar imageSeriesEnergy(const scalar kt, const scalar dR)
+{
+    scalar s = 0;
+    for (label n = 1; n < 1000000; ++n)
+    {
+        const scalar t =
+            (1 - kt)*n/((1 + kt)*n + 1)*std::pow(1/(1 + dR), 2*(n + 1));
+        s += t;
+        if (mag(t) < 1e-15*mag(s)) break;
+    }
+    return s/(8*pi);
+}
+
+// Grading towards a nearby object at gap d (radius 1): Moebius factor
+scalar gradingLambda(const scalar dR)
+{
+    return min(1.0, 0.6*Foam::sqrt(dR));
+}
+
+// Force on sphere 2 (at +x) of two spheres R = 1, gap dR, sigma_f s1, s2
+scalar twoSphereForce
+(
+    const label n,
+    const scalar kp,
+    const scalar dR,
+    const scalar s1,
+    const scalar s2,
+    const bool graded,
+    const bemSolverControls& c = bemSolverControls()
+)
+{
+    bemSolver s(1, c);
+    const label sh = s.shape
+    (
+        vector(1, 1, 1), n, vector(1, 0, 0), graded ? gradingLambda(dR) : 1
+    );
+    const tensor Rz(-1, 0, 0, 0, -1, 0, 0, 0, 1);   // focus -> -x
+    const scalar A = s.mesh(sh).areas().size() ? sum(s.mesh(sh).areas()) : 0;
+    s.addParticle(sh, point::zero, tensor::I, kp, s1*A);
+    s.addParticle(sh, point(2 + dR, 0, 0), Rz, kp, s2*A);
+    s.solve();
+    EXPECT_TRUE(s.info().converged);
+    return s.forces()[1].x();
+}
+
+} // namespace
+
+
+TEST(bemElectrostatics, TreecodeAgainstDirect)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<scalar> U(-1, 1);
+    const label N = 4000;
+    pointField x(N);
+    scalarField q(N);
+    for (label i = 0; i < N; ++i)
+    {
+        vector v(U(rng), U(rng), U(rng));
+        x[i] = v/mag(v) + (i % 2 ? vector(2.4, 0, 0) : vector::zero);
+        q[i] = U(rng);
+    }
+    vectorField Ed;
+    scalarField pd;
+    bemTreecode::direct(x, q, x, true, Ed, &pd);
+    scalar prev = GREAT;
+    for (const scalar th : {0.7, 0.5, 0.3, 0.2})
+    {
+        bemTreecode t(x, th, 2, 16);
+        vectorField E;
+        scalarField p;
+        t.evaluate(q, x, true, E, &p);
+        scalar e2 = 0, r2 = 0;
+        forAll(E, i)
+        {
+            e2 += magSqr(E[i] - Ed[i]);
+            r2 += magSqr(Ed[i]);
+        }
+        const scalar err = Foam::sqrt(e2/r2);
+        std::printf("treecode theta %.1f order 2: rel. L2 field error %.2e\n", th, err);
+        EXPECT_LT(err, prev);
+        prev = err;
+    }
+    EXPECT_LT(prev, 1e-4);
+}
+
+
+TEST(bemElectrostatics, SphereInUniformFieldSelfTerms)
+{
+    // L2 error of sigma_b against 3 eps0 E0 K cos(t), kp = 10 and 100
+    for (const scalar kp : {10.0, 100.0})
+    {
+        const scalar K = (kp - 1)/(kp + 2);
+        scalar err[2][3];
+        const label ns[2] = {400, 1600};
+        for (label in = 0; in < 2; ++in)
+        {
+            for (label m = 0; m < 3; ++m)
+            {
+                bemSolverControls c;
+                c.selfTerm =
+                    m == 0 ? bemSelfTermModel::zero
+                  : m == 1 ? bemSelfTermModel::curvature
+                  : bemSelfTermModel::gauss;
+                bemSolver s(1, c);
+                const label sh = s.shape(vector(1, 1, 1), ns[in]);
+                s.addParticle(sh, point::zero, tensor::I, kp, 0.0);
+                s.setExternalField(vector(0, 0, 1));
+                s.solve();
+                const auto sb = s.sigmaB(0);
+                const auto xc = s.centres(0);
+                scalar e2 = 0, r2 = 0;
+                forAll(sb, i)
+                {
+                    const scalar ex = 3*eps0*K*xc[i].z()/mag(xc[i]);
+                    e2 += sqr(sb[i] - ex);
+                    r2 += sqr(ex);
+                }
+                err[in][m] = Foam::sqrt(e2/r2);
+                // Neutral sphere in a uniform field: no force
+                EXPECT_LT(mag(s.forces()[0]), 1e-3*eps0*K*4*pi);
+            }
+            std::printf
+            (
+                "sphere kp %g n %d: L2 error zero %.4f curvature %.4f"
+                " gauss %.4f\n", kp, ns[in], err[in][0], err[in][1],
+                err[in][2]
+            );
+            // Both corrections beat the paper's I_ii = 0
+            EXPECT_LT(err[in][1], err[in][0]);
+            EXPECT_LT(err[in][2], err[in][0]);
+        }
+        // Converging under refinement
+        for (label m = 0; m < 3; ++m)
+        {
+            EXPECT_LT(err[1][m], err[0][m]);
+        }
+    }
+}
+
+
+TEST(bemElectrostatics, PointChargeDielectricSphereAppA)
+{
+    // Ruan App. A: < 1% at d/R = 0.05 with <= 1000 patches (graded mesh)
+    for (const scalar kt : {2.0, 10.0, 100.0})
+    {
+        for (const scalar dR : {0.05, 0.1, 0.2, 0.5, 1.0, 2.0})
+        {
+            bemSolver s(1);
+            const label sh =
+                s.shape(vector(1, 1, 1), 1000, vector(1, 0, 0), gradingLambda(dR));
+            s.addParticle(sh, point::zero, tensor::I, kt, 0.0);
+            s.addPointCharge(point(1 + dR, 0, 0), 1.0);
+            s.solve();
+            const scalar U = s.energy()*eps0;      // q = 1, R = 1
+            const scalar Uex = imageSeriesEnergy(kt, dR);
+            std::printf
+            (
+                "AppA kt %5g d/R %4.2f: U/U0 BEM %.6f series %.6f rel %+.4f"
+                " (GMRES %d)\n", kt, dR, U, Uex, U/Uex - 1,
+                s.info().iterations
+            );
+            EXPECT_NEAR(U/Uex, 1, 0.01);
+        }
+    }
+}
+
+
+TEST(bemElectrostatics, TwoSpheresKappa1Coulomb)
+{
+    for (const scalar dR : {0.1, 0.5, 1.0, 2.0})
+    {
+        const scalar F = twoSphereForce(400, 1, dR, 1, 1, false);
+        // Same free charge as the BEM: sigma_f times the meshed area
+        const scalar A = sum(ellipsoidSurfaceMesh(vector(1, 1, 1), 400).areas());
+        const scalar Fc = sqr(A)/(4*pi*eps0*sqr(2 + dR));
+        std::printf("Coulomb d/R %.2f: F/Fc - 1 = %+.2e\n", dR, F/Fc - 1);
+        EXPECT_NEAR(F/Fc, 1, 0.005);
+    }
+}
+
+
+TEST(bemElectrostatics, TwoDielectricSpheresRefinementAndDipoleModel)
+{
+    const scalar F0 = pi/eps0;       // pi R^2 sigma1 sigma2/eps0, sigma = 1
+    for (const scalar sgn : {1.0, -1.0})
+    {
+        for (const scalar dR : {0.1, 1.0})
+        {
+            const scalar kp = 100;
+            const scalar Fc = twoSphereForce(400, kp, dR, 1, sgn, true);
+            const scalar Ff = twoSphereForce(1600, kp, dR, 1, sgn, true);
+            const scalar errEst = mag(Ff - Fc)/mag(Ff);
+
+            inducedDipole dm(1);
+            const scalar Q = 4*pi;
+            dm.addParticle(point::zero, vector(1, 1, 1), tensor::I, kp, Q);
+            dm.addParticle(point(2 + dR, 0, 0), vector(1, 1, 1), tensor::I, kp, sgn*Q);
+            dm.solve();
+            const scalar Fd = dm.forces()[1].x();
+            std::printf
+            (
+                "kp %g sigma2 %+g d/R %.2f: F/|F0| n400 %.4f n1600 %.4f"
+                " (est. rel. error of n400 %.3f) dipole model %.4f\n",
+                kp, sgn, dR, Fc/F0, Ff/F0, errEst, Fd/F0
+            );
+            EXPECT_LT(errEst, 0.05);
+            if (sgn > 0)
+            {
+                // Like charges: polarisation weakens the repulsion below
+                // Coulomb, and the dipole model over-predicts it (Fig. 7b)
+                EXPECT_LT(Ff, Q*Q/(4*pi*eps0*sqr(2 + dR)));
+                EXPECT_GT(Fd, Ff);
+            }
+            else
+            {
+                // Opposite charges: attraction stronger than Coulomb and
+                // than the dipole model (Fig. 7d)
+                EXPECT_LT(Ff, -Q*Q/(4*pi*eps0*sqr(2 + dR)));
+                EXPECT_LT(Ff, Fd);
+            }
+        }
+    }
+}
+
+
+TEST(bemElectrostatics, DepolarisationFactors)
+{
+    const vector Ls = inducedDipole::depolarisationFactors(vector(1, 1, 1));
+    EXPECT_NEAR(Ls.x(), 1.0/3, 1e-8);
+    for (const scalar a : {2.0, 5.0, 10.0})
+    {
+        const vector L = inducedDipole::depolarisationFactors(vector(a, 1, 1));
+        const scalar e = Foam::sqrt(1 - 1/sqr(a));
+        const scalar Lx = (1 - sqr(e))/(e*e*e)*(std::atanh(e) - e);
+        EXPECT_NEAR(L.x(), Lx, 1e-8);
+        EXPECT_NEAR(L.x() + L.y() + L.z(), 1, 1e-8);
+    }
+}
+
+
+TEST(bemElectrostatics, ProlateSpheroidTorqueEq49)
+{
+    // kappa_p = 2.5, E0 = [1,1,1]/sqrt(3), b = c = 1: within 2%, M_x = 0
+    const scalar kp = 2.5;
+    const vector E0 = vector(1, 1, 1)/Foam::sqrt(3.0);
+    const scalar M0 = 4*pi*eps0/3;   // 4 pi eps0 b^3 E0^2/3
+    // (a, n, curvature grading beta): uniform meshes, and a = 10 with
+    // patches refined towards the tips (uniform a = 10 needs 4000 patches)
+    const std::vector<std::tuple<scalar, label, scalar>> cases =
+        {{2, 1000, 0}, {5, 2000, 0}, {10, 2000, 0.5}};
+    for (const auto& c : cases)
+    {
+        const scalar a = std::get<0>(c);
+        const label n = std::get<1>(c);
+        bemSolver s(1);
+        const label sh = s.shape
+        (
+            vector(a, 1, 1), n, vector(1, 0, 0), 1, std::get<2>(c)
+        );
+        s.addParticle(sh, point::zero, tensor::I, kp, 0.0);
+        s.setExternalField(E0);
+        s.solve();
+        const vector M = s.torques()[0];
+        const tensor alpha =
+            inducedDipole::polarisability(vector(a, 1, 1), tensor::I, kp, 1);
+        const vector Mex = (alpha & E0) ^ E0;      // Eq. 49
+        std::printf
+        (
+            "prolate a %g n %d beta %g: M/M0 BEM (%.5f %.5f %.5f) Eq.49"
+            " (%.5f %.5f %.5f)\n", a, n, std::get<2>(c), M.x()/M0, M.y()/M0,
+            M.z()/M0,
+            Mex.x()/M0, Mex.y()/M0, Mex.z()/M0
+        );
+        EXPECT_NEAR(M.y()/Mex.y(), 1, 0.02);
+        EXPECT_NEAR(M.z()/Mex.z(), 1, 0.02);
+        EXPECT_LT(mag(M.x()), 0.01*mag(Mex));
+    }
+}
+
+
+TEST(bemElectrostatics, TwoProlateSpheroidsOrientation)
+{
+    // a = 2, b = c = 1, kp = 10, sigma_f +1/-1, gap d = 0.2 c:
+    // side-by-side attracts most, head-to-tail least (Ruan Fig. 9d)
+    const scalar d = 0.2;
+    const tensor Rz90(0, -1, 0, 1, 0, 0, 0, 0, 1);   // x_body -> y
+    scalar F[3];
+    for (label cfg = 0; cfg < 3; ++cfg)
+    {
+        bemSolver s(1);
+        const label sh = s.shape(vector(2, 1, 1), 800);
+        const scalar A = sum(s.mesh(sh).areas());
+        // approach along x; semi-extent along x of each particle
+        const tensor R1 = cfg == 2 ? Rz90 : tensor::I;
+        const tensor R2 = cfg >= 1 ? Rz90 : tensor::I;
+        const scalar e1 = cfg == 2 ? 1 : 2;
+        const scalar e2 = cfg >= 1 ? 1 : 2;
+        s.addParticle(sh, point::zero, R1, 10, A);
+        s.addParticle(sh, point(e1 + d + e2, 0, 0), R2, 10, -A);
+        s.solve();
+        F[cfg] = s.forces()[1].x();
+        std::printf
+        (
+            "prolates %s d/c %.1f: F/|F0| = %.4f\n",
+            cfg == 0 ? "head-to-tail " : cfg == 1 ? "perpendicular" : "side-by-side",
+            d, F[cfg]/(pi/eps0)
+        );
+    }
+    EXPECT_LT(F[2], F[1]);
+    EXPECT_LT(F[1], F[0]);
+    EXPECT_LT(F[0], 0);
+}
+
+
+TEST(bemElectrostatics, PerPatchFreeChargeSphere)
+{
+    // Free charge sigma_f = s0 cos(t) on a dielectric sphere (no field):
+    // phi_in = A r cos t, phi_out = A R^3 cos t/r^2, eps0 A (kp + 2) = s0,
+    // so sigma_b = -s0 (kp - 1)/(kp + 2) cos t
+    const scalar kp = 10;
+    bemSolver s(1);
+    const label sh = s.shape(vector(1, 1, 1), 1600);
+    const pointField& c = s.mesh(sh).centres();
+    scalarField sf(c.size());
+    forAll(c, i)
+    {
+        sf[i] = c[i].z()/mag(c[i]);
+    }
+    s.addParticle(sh, point::zero, tensor::I, kp, sf);
+    s.solve();
+    const auto sb = s.sigmaB(0);
+    scalar e2 = 0, r2 = 0;
+    forAll(sb, i)
+    {
+        const scalar ex = -sf[i]*(kp - 1)/(kp + 2);
+        e2 += sqr(sb[i] - ex);
+        r2 += sqr(ex);
+    }
+    std::printf("per-patch sigma_f: L2 error of sigma_b %.4f\n", Foam::sqrt(e2/r2));
+    EXPECT_LT(Foam::sqrt(e2/r2), 0.01);
+}
+
+
+TEST(bemElectrostatics, RigidRotationOfConfiguration)
+{
+    // Rotating the whole configuration by Q rotates forces and torques by
+    // Q and leaves the energy unchanged (body-frame shape data, world-frame
+    // assembly). Direct products and a tight tolerance: the axis-aligned
+    // octree is not rotation invariant (differences ~1e-3 with it)
+    const tensor Q =
+        quaternion(vector(1, 2, 3)/Foam::sqrt(14.0), 0.7).R();
+    const tensor R1 = quaternion(vector(0, 1, 1)/Foam::sqrt(2.0), 0.4).R();
+    const tensor R2 = quaternion(vector(1, 0, 0), 1.1).R();
+    vector F[2], M[2];
+    scalar U[2];
+    for (label k = 0; k < 2; ++k)
+    {
+        const tensor T = k ? Q : tensor::I;
+        bemSolverControls c;
+        c.matvec = bemMatvecMethod::direct;
+        c.tolerance = 1e-10;
+        bemSolver s(1, c);
+        const label sh = s.shape(vector(2, 1, 0.8), 600);
+        const scalar A = sum(s.mesh(sh).areas());
+        s.addParticle(sh, T & point(0, 0, 0), T & R1, 10, A);
+        s.addParticle(sh, T & point(4.3, 0.5, 0), T & R2, 5, -0.5*A);
+        s.setExternalField(T & vector(0, 0, 1e10));
+        s.solve();
+        F[k] = s.forces()[1];
+        M[k] = s.torques()[1];
+        U[k] = s.energy();
+    }
+    EXPECT_LT(mag(F[1] - (Q & F[0])), 1e-7*mag(F[0]));
+    EXPECT_LT(mag(M[1] - (Q & M[0])), 1e-7*mag(M[0]));
+    EXPECT_NEAR(U[1]/U[0], 1, 1e-9);
+}
+
+
+TEST(bemElectrostatics, InducedDipoleChargeNeutralSphere)
+{
+    // Charge q and neutral sphere R, K = (kp-1)/(kp+2) at distance r:
+    // exact within the model F = -2 k^2 q^2 alpha/r^5, alpha = K R^3/k
+    const scalar kp = 10, R = 1, r = 7, q = 1e-9;
+    inducedDipole dm(1);
+    dm.addParticle(point::zero, vector(R, R, R), tensor::I, kp, 0);
+    dm.addParticle(point(r, 0, 0), vector(1e-3, 1e-3, 1e-3), tensor::I, 1, q);
+    dm.solve();
+    const scalar k = 1/(4*pi*eps0);
+    const scalar K = (kp - 1)/(kp + 2);
+    const scalar Fex = 2*k*q*q*K*pow(R, 3)/pow(r, 5);
+    EXPECT_NEAR(dm.forces()[0].x()/Fex, 1, 1e-6);
+    EXPECT_NEAR(dm.forces()[1].x()/(-Fex), 1, 1e-6);
+}
+
+
+int main(int argc, char** argv)
+{
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
+
+
+// ************************************************************************* //
