@@ -284,10 +284,35 @@ void Foam::ChargedCloud<CloudType>::info()
         }
     }
 
-    if (electrostatics().active() && electrostatics().hasEnergy())
+    if (electrostatics().active())
     {
-        Info<< "    Electrostatic energy            = "
-            << electrostatics().energy() << nl;
+        if (electrostatics().hasEnergy())
+        {
+            Info<< "    Electrostatic energy            = "
+                << electrostatics().energy() << nl;
+        }
+
+        // Agitation q_p^2 = <|u - <u>|^2>/2 and <|fE|/m> (Boutsikakis 2023
+        // Eqs. 25, 28), all processors
+        scalar n = 0, sumUU = 0, sumA = 0;
+        vector sumU(Zero);
+        for (const parcelType& p : *this)
+        {
+            n += 1;
+            sumU += p.U();
+            sumUU += magSqr(p.U());
+            sumA += mag(p.fE())/p.mass();
+        }
+        reduce(n, sumOp<scalar>());
+        reduce(sumU, sumOp<vector>());
+        reduce(sumUU, sumOp<scalar>());
+        reduce(sumA, sumOp<scalar>());
+        if (n > 0)
+        {
+            Info<< "    Particle agitation q_p^2        = "
+                << 0.5*max(sumUU/n - magSqr(sumU/n), scalar(0)) << nl
+                << "    Mean electrostatic acceleration = " << sumA/n << nl;
+        }
     }
 }
 

@@ -42,6 +42,10 @@ Foam::ParticleHistory<CloudType>::ParticleHistory
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
     interval_(this->coeffDict().template lookupOrDefault<label>("interval", 1)),
+    maxOrigId_
+    (
+        this->coeffDict().template lookupOrDefault<label>("maxOrigId", -1)
+    ),
     filePtr_()
 {
     if (interval_ < 1)
@@ -62,6 +66,7 @@ Foam::ParticleHistory<CloudType>::ParticleHistory
 :
     CloudFunctionObject<CloudType>(ph),
     interval_(ph.interval_),
+    maxOrigId_(ph.maxOrigId_),
     filePtr_()
 {}
 
@@ -78,7 +83,14 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
     }
 
     // Local rows: the two labels and the twelve scalars of each parcel
-    const label np = this->owner().size();
+    label np = 0;
+    for (const auto& p : this->owner())
+    {
+        if (maxOrigId_ < 0 || p.origId() <= maxOrigId_)
+        {
+            ++np;
+        }
+    }
     const label me = Pstream::myProcNo();
     List<labelList> ids(Pstream::nProcs());
     List<scalarList> values(Pstream::nProcs());
@@ -88,6 +100,10 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
     label i = 0;
     for (const auto& p : this->owner())
     {
+        if (maxOrigId_ >= 0 && p.origId() > maxOrigId_)
+        {
+            continue;
+        }
         ids[me][2*i] = p.origProc();
         ids[me][2*i + 1] = p.origId();
         const point x = p.position();
