@@ -153,6 +153,8 @@ void Foam::pairwiseCoulomb::addForces
     UList<vector>& f
 ) const
 {
+    // Not q*addFields: the pair force q_i q_j g is formed once and given
+    // to both ends, so that Newton's third law holds bit for bit
     const label n = x.size();
     for (label i = 0; i < n; ++i)
     {
