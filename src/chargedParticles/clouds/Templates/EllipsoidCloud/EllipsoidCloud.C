@@ -18,23 +18,34 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     const scalar deltaT
 )
 {
+    // The kicks and the rotation do not move parcels through the mesh: a
+    // plain loop, not Cloud::move (whose tracking set-up and processor
+    // transfer exchange would be for nothing)
+    auto inPlace = [&](const typename parcelType::trackingData::trackPart part)
+    {
+        td.part() = part;
+        for (parcelType& p : *this)
+        {
+            td.keepParticle = true;
+            td.switchProcessor = false;
+            p.move(cloud, td, deltaT);
+        }
+    };
+
     cloud.initialiseForces();
 
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, deltaT);
+    inPlace(parcelType::trackingData::tpVelocityHalfStep);
 
     td.part() = parcelType::trackingData::tpLinearTrack;
     CloudType::move(cloud, td, deltaT);
 
-    td.part() = parcelType::trackingData::tpRotationalTrack;
-    CloudType::move(cloud, td, deltaT);
+    inPlace(parcelType::trackingData::tpRotationalTrack);
 
     this->updateCellOccupancy();
 
     cloud.calculateForces();
 
-    td.part() = parcelType::trackingData::tpVelocityHalfStep;
-    CloudType::move(cloud, td, deltaT);
+    inPlace(parcelType::trackingData::tpVelocityHalfStep);
 }
 
 
