@@ -67,6 +67,8 @@ badCase unknownModel    'electrostaticsModel directCoulomb;' 'electrostaticsMode
 badCase chargingWithoutEllipsoidCollision 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel directCoulomb; triboChargingModel GammaKappa; GammaKappaCoeffs { particles { kappaC 1; } walls { ".*" { kappaC 1; Gamma 0; } } }' \
     'Entry triboChargingModel GammaKappa needs collisionModel ellipsoidCollision'
+badCase missingCutoff 'electrostaticsModel directCoulomb;' 'electrostaticsModel cutoffCoulomb;' \
+    'Entry rCut .* is missing: it must be given, finite and > 0'
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

@@ -291,3 +291,46 @@ int main(int argc, char** argv)
 
 
 // ************************************************************************* //
+
+
+TEST(pairwiseCoulomb, CutoffSumEqualsBruteForceTruncation)
+{
+    // Cell-list truncated sum vs a brute-force loop with the same cutoff;
+    // with a cutoff beyond the cloud it is the full sum
+    const pairwiseCoulomb coulomb;
+    pointField x;
+    scalarField q;
+    randomCloud(400, x, q, 11);
+    for (const scalar rCut : {0.05, 0.13, 0.3, 2.0})
+    {
+        vectorField E(x.size(), Zero);
+        coulomb.addFieldsWithinCutoff(x, x, q, rCut, E, 0);
+        vectorField Eref(x.size(), Zero);
+        forAll(x, i)
+        {
+            forAll(x, j)
+            {
+                const vector r = x[i] - x[j];
+                if (i != j && magSqr(r) < sqr(rCut))
+                {
+                    Eref[i] += kCODATA*q[j]*r/pow3(mag(r));
+                }
+            }
+        }
+        scalar maxE = 0, maxErr = 0;
+        forAll(x, i)
+        {
+            maxE = max(maxE, mag(Eref[i]));
+            maxErr = max(maxErr, mag(E[i] - Eref[i]));
+        }
+        EXPECT_LT(maxErr, 1e-9*maxE) << "rCut " << rCut;
+    }
+
+    vectorField Efull(x.size(), Zero), Ecut(x.size(), Zero);
+    coulomb.addFields(x, q, Efull);
+    coulomb.addFieldsWithinCutoff(x, x, q, 10, Ecut, 0);
+    forAll(x, i)
+    {
+        EXPECT_LT(mag(Ecut[i] - Efull[i]), 1e-12*mag(Efull[i]));
+    }
+}

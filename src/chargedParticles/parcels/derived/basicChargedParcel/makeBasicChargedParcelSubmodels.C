@@ -25,6 +25,7 @@ Description
 #include "NoElectrostatics.H"
 #include "DirectCoulomb.H"
 #include "PeriodicCoulomb.H"
+#include "CutoffCoulomb.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "NoTriboCharging.H"
@@ -52,6 +53,7 @@ makeElectrostaticsModel(basicChargedCloud);
 makeElectrostaticsModelType(NoElectrostatics, basicChargedCloud);
 makeElectrostaticsModelType(DirectCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
+makeElectrostaticsModelType(CutoffCoulomb, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);

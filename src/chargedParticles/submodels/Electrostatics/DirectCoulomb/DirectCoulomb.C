@@ -95,7 +95,22 @@ Foam::DirectCoulomb<CloudType>::DirectCoulomb
     CloudType& owner
 )
 :
-    ElectrostaticsModel<CloudType>(dict, owner, typeName),
+    DirectCoulomb<CloudType>(dict, owner, typeName)
+{
+    Info<< "    Direct pairwise Coulomb sum, medium epsilonR = "
+        << coulomb_.epsilonR() << endl;
+}
+
+
+template<class CloudType>
+Foam::DirectCoulomb<CloudType>::DirectCoulomb
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    ElectrostaticsModel<CloudType>(dict, owner, type),
     coulomb_(readEpsilonR(this->coeffDict())),
     contactCorrection_
     (
@@ -110,10 +125,7 @@ Foam::DirectCoulomb<CloudType>::DirectCoulomb
         )
       - 1
     )
-{
-    Info<< "    Direct pairwise Coulomb sum, medium epsilonR = "
-        << coulomb_.epsilonR() << endl;
-}
+{}
 
 
 template<class CloudType>

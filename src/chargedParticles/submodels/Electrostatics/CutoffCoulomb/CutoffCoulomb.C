@@ -1,0 +1,97 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "CutoffCoulomb.H"
+#include "ListListOps.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    DirectCoulomb<CloudType>(dict, owner, typeName),
+    rCut_
+    (
+        this->coeffDict().found("rCut")
+      ? this->coeffDict().template get<scalar>("rCut")
+      : -1
+    )
+{
+    if (!(rCut_ > 0) || !std::isfinite(rCut_))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry rCut (cutoff radius [m]) in "
+            << this->coeffDict().name().c_str() << " is "
+            << (this->coeffDict().found("rCut") ? "out of range" : "missing")
+            << ": it must be given, finite and > 0" << exit(FatalIOError);
+    }
+
+    Info<< "    Pairwise Coulomb sum within rCut = " << rCut_
+        << " m (cell list), medium epsilonR = "
+        << this->coulomb_.epsilonR() << endl;
+}
+
+
+template<class CloudType>
+Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
+(
+    const CutoffCoulomb<CloudType>& em
+)
+:
+    DirectCoulomb<CloudType>(em),
+    rCut_(em.rCut_)
+{}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::CutoffCoulomb<CloudType>::calculate()
+{
+    List<pointField> allX;
+    List<scalarField> allQ;
+    this->gatherCharges(allX, allQ);
+
+    // All charges in one list; this processor's from offset on
+    const label me = Pstream::myProcNo();
+    label offset = 0;
+    for (label proci = 0; proci < me; ++proci)
+    {
+        offset += allX[proci].size();
+    }
+    const pointField xS
+    (
+        ListListOps::combine<pointField>(allX, accessOp<pointField>())
+    );
+    const scalarField qS
+    (
+        ListListOps::combine<scalarField>(allQ, accessOp<scalarField>())
+    );
+
+    const pointField& x = allX[me];
+    const scalarField& q = allQ[me];
+    vectorField E(x.size(), Zero);
+    this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, offset);
+
+    vectorField f(q*E);
+    if (this->contactCorrection_ != 0)
+    {
+        this->correctContactPairs(allX, allQ, f);
+    }
+
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        p.E() = E[i];
+        p.fE() = f[i];
+        ++i;
+    }
+}
+
+
+// ************************************************************************* //

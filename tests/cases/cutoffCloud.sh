@@ -1,0 +1,98 @@
+# electrostaticsModel cutoffCoulomb (direct truncation, cell list) in the
+# cloud: 60 charges of both signs in a 1 m box. The written forces fE equal
+# an independent brute-force truncated sum (numpy) for rCut = 0.3 m, in
+# serial and on 2 processors, and directCoulomb's for a cutoff beyond the
+# box.
+. "$(dirname "$0")/common.sh.inc"
+
+copyCase twoChargedSpheres "$work/cut"
+cd "$work/cut" || exit 1
+$PY - <<'PYEOF'
+import re
+import numpy as np
+rng = np.random.default_rng(5)
+p = "system/blockMeshDict"
+s = open(p).read()
+s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
+s = re.sub(r"vertices\s*\(.*?\);", """vertices
+(
+    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)
+);""", s, flags=re.S)
+s = re.sub(r"blocks\s*\(.*?\);", "blocks\n(\n    hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1)\n);", s, flags=re.S)
+s = re.sub(r"boundary\s*\(.*\);", """boundary
+(
+    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }
+);""", s, flags=re.S)
+open(p, "w").write(s)
+x = 0.05 + 0.9*rng.random((60, 3))
+q = 1e-9*(2*rng.random(60) - 1)
+np.savetxt("charges.txt", np.column_stack([x, q]))
+p = "constant/cloudProperties"
+s = open(p).read()
+parcels = "\n".join("                { position (%.12g %.12g %.12g); d 1e-3; rho 1000; q %.12g; }" % (r[0], r[1], r[2], c) for r, c in zip(x, q))
+s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
+s = re.sub(r"electrostaticsModel\s+\w+;", "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.3; }", s)
+open(p, "w").write(s)
+p = "system/controlDict"
+s = open(p).read()
+s = re.sub(r"^endTime .*?;", "endTime 1e-6;", s, flags=re.M)
+s = re.sub(r"^deltaT .*?;", "deltaT 1e-6;", s, flags=re.M)
+s = re.sub(r"^writeInterval .*?;", "writeInterval 1;", s, flags=re.M)
+open(p, "w").write(s)
+PYEOF
+cp -r "$work/cut" "$work/parallel"
+cp -r "$work/cut" "$work/far"
+cp -r "$work/cut" "$work/direct"
+sed -i 's/rCut 0.3;/rCut 2;/' "$work/far/constant/cloudProperties"
+sed -i 's/electrostaticsModel cutoffCoulomb;/electrostaticsModel directCoulomb;/' "$work/direct/constant/cloudProperties"
+for c in cut far direct
+do
+    cd "$work/$c" || exit 1
+    run blockMesh blockMesh && run solver chargedParticleFoam \
+        || fail "cutoffCloud.$c (solver failed, see $work/$c/log.solver)"
+done
+cd "$work/parallel" || exit 1
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 2 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "cutoffCloud.parallel (run failed, see $work/parallel)"
+
+$PY - "$work" "$top/etc/python" <<'PYEOF'
+import os, sys
+import numpy as np
+work = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+from foamLagrangian import read_field, read_positions
+k = 8.9875517923e9
+d = np.loadtxt(work + "/cut/charges.txt")
+x0, q0 = d[:, :3], d[:, 3]
+
+def truncated(rc):
+    F = np.zeros_like(x0)
+    for i in range(len(x0)):
+        r = x0[i] - x0
+        rr = np.linalg.norm(r, axis=1)
+        m = (rr > 0) & (rr < rc)
+        F[i] = k*q0[i]*np.sum((q0[m]/rr[m]**3)[:, None]*r[m], axis=0)
+    return F
+
+def load(case):
+    t = max((e for e in os.listdir(case) if e.replace(".", "").replace("e-", "").isdigit() and e != "0"), key=float)
+    p = f"{case}/{t}/lagrangian/cloud"
+    x = read_positions(p + "/positions")
+    f = read_field(p + "/fE").reshape(-1, 3)
+    idx = [np.argmin(np.linalg.norm(x0 - xi, axis=1)) for xi in x]
+    return idx, f
+
+ref = {"cut": truncated(0.3), "parallel": truncated(0.3), "far": None}
+idxD, fD = load(work + "/direct")
+direct = np.zeros_like(x0); direct[idxD] = fD
+for name in ("cut", "parallel", "far"):
+    idx, f = load(f"{work}/{name}")
+    R = ref[name][idx] if ref[name] is not None else direct[idx]
+    err = np.abs(f - R).max()/np.abs(R).max()
+    tol = 1e-9 if ref[name] is not None else 1e-12
+    what = "a numpy truncated sum (rCut 0.3 m)" if ref[name] is not None else "directCoulomb (rCut 2 m > box)"
+    ok = len(set(idx)) == len(x0) and err < tol
+    print(f"{'PASS' if ok else 'FAIL'}: cutoffCloud.{name} (fE vs {what}: max rel. difference {err:.1e}, tol {tol:g})")
+PYEOF
