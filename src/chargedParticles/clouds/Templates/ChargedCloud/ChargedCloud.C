@@ -264,6 +264,23 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
 
 
 template<class CloudType>
+Foam::scalar Foam::ChargedCloud<CloudType>::agitation() const
+{
+    scalar n = this->size(), sumUU = 0;
+    vector sumU(Zero);
+    for (const parcelType& p : *this)
+    {
+        sumU += p.U();
+        sumUU += magSqr(p.U());
+    }
+    reduce(n, sumOp<scalar>());
+    reduce(sumU, sumOp<vector>());
+    reduce(sumUU, sumOp<scalar>());
+    return n > 0 ? 0.5*max(sumUU/n - magSqr(sumU/n), scalar(0)) : 0;
+}
+
+
+template<class CloudType>
 void Foam::ChargedCloud<CloudType>::info()
 {
     CloudType::info();
@@ -292,25 +309,17 @@ void Foam::ChargedCloud<CloudType>::info()
                 << electrostatics().energy() << nl;
         }
 
-        // Agitation q_p^2 = <|u - <u>|^2>/2 and <|fE|/m> (Boutsikakis 2023
-        // Eqs. 25, 28), all processors
-        scalar n = 0, sumUU = 0, sumA = 0;
-        vector sumU(Zero);
+        // <|fE|/m> (Boutsikakis 2023 Eq. 28), all processors
+        scalar n = this->size(), sumA = 0;
         for (const parcelType& p : *this)
         {
-            n += 1;
-            sumU += p.U();
-            sumUU += magSqr(p.U());
             sumA += mag(p.fE())/p.mass();
         }
         reduce(n, sumOp<scalar>());
-        reduce(sumU, sumOp<vector>());
-        reduce(sumUU, sumOp<scalar>());
         reduce(sumA, sumOp<scalar>());
         if (n > 0)
         {
-            Info<< "    Particle agitation q_p^2        = "
-                << 0.5*max(sumUU/n - magSqr(sumU/n), scalar(0)) << nl
+            Info<< "    Particle agitation q_p^2        = " << agitation() << nl
                 << "    Mean electrostatic acceleration = " << sumA/n << nl;
         }
     }

@@ -482,12 +482,10 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
     List<DynamicList<parcelType*>>& cellOccupancy =
         this->owner().cellOccupancy();
 
-    const List<pointField>& cellPositions = cellPositions_;
-
     forAll(dil, realCelli)
     {
         const DynamicList<parcelType*>& cellA = cellOccupancy[realCelli];
-        const pointField& xCellA = cellPositions[realCelli];
+        const pointField& xCellA = cellPositions_[realCelli];
         forAll(cellA, a)
         {
             parcelType& pA = *cellA[a];
@@ -499,7 +497,7 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
                 const DynamicList<parcelType*>& cellB = cellOccupancy[cellBi];
                 forAll(cellB, b)
                 {
-                    evaluatePair(pA, xA, *cellB[b], cellPositions[cellBi][b]);
+                    evaluatePair(pA, xA, *cellB[b], cellPositions_[cellBi][b]);
                 }
             }
 
@@ -662,7 +660,8 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     mesh.points(),
                     mesh.faceCentres()[facei],
                     Sf/mag(Sf),
-                    mesh.boundaryMesh().whichPatch(facei)
+                    // The patch only for the listed contacts (a search)
+                    recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
                 );
             }
 
@@ -736,8 +735,6 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     ),
     nBufferWarnings_(0),
     nBufferWarningsTotal_(0),
-    dissipatedEnergy_(0),
-    elasticEnergy_(0),
     resolutionSteps_
     (
         this->coeffDict().template lookupOrDefault<label>
@@ -755,6 +752,9 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         this->coeffDict().template lookupOrDefault<word>("U", "U.carrier")
     ),
     nUnconverged_(0),
+    dissipatedEnergy_(0),
+    elasticEnergy_(0),
+    cellPositions_(),
     recordContacts_(false),
     contacts_(),
     particleE_(0),

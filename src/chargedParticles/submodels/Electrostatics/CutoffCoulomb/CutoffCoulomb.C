@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "CutoffCoulomb.H"
-#include "ListListOps.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -57,24 +56,15 @@ void Foam::CutoffCoulomb<CloudType>::calculate()
     List<scalarField> allQ;
     this->gatherCharges(allX, allQ);
 
-    // All charges in one list; this processor's from offset on
-    const label me = Pstream::myProcNo();
+    // All charges in one list as the sources (the contact correction
+    // below wants the per-processor lists too)
+    pointField xS;
+    scalarField qS;
     label offset = 0;
-    for (label proci = 0; proci < me; ++proci)
-    {
-        offset += allX[proci].size();
-    }
-    const pointField xS
-    (
-        ListListOps::combine<pointField>(allX, accessOp<pointField>())
-    );
-    const scalarField qS
-    (
-        ListListOps::combine<scalarField>(allQ, accessOp<scalarField>())
-    );
+    this->combine(allX, allQ, xS, qS, offset);
 
-    const pointField& x = allX[me];
-    const scalarField& q = allQ[me];
+    const pointField& x = allX[Pstream::myProcNo()];
+    const scalarField& q = allQ[Pstream::myProcNo()];
     vectorField E(x.size(), Zero);
     this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, offset);
 

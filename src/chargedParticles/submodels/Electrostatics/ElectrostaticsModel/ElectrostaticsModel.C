@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ElectrostaticsModel.H"
+#include "ListListOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -53,6 +54,41 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
     Pstream::scatterList(allQ);
 }
 
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::combine
+(
+    const List<pointField>& allX,
+    const List<scalarField>& allQ,
+    pointField& x,
+    scalarField& q,
+    label& myStart
+)
+{
+    myStart = 0;
+    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    {
+        myStart += allX[proci].size();
+    }
+    x = ListListOps::combine<pointField>(allX, accessOp<pointField>());
+    q = ListListOps::combine<scalarField>(allQ, accessOp<scalarField>());
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::gatherCharges
+(
+    pointField& x,
+    scalarField& q,
+    label& myStart
+) const
+{
+    List<pointField> allX;
+    List<scalarField> allQ;
+    gatherCharges(allX, allQ);
+    combine(allX, allQ, x, q, myStart);
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //

@@ -53,22 +53,17 @@ void Foam::PeriodicCoulomb<CloudType>::reportTimeStep() const
         return;
     }
 
-    // Cloud means (all processors): |q|, m, U and U.U
-    scalar n = 0, sumQ = 0, sumM = 0, sumUU = 0;
-    vector sumU(Zero);
+    // Cloud means (all processors): |q|, m
+    scalar n = 0, sumQ = 0, sumM = 0;
     for (const auto& p : this->owner())
     {
         n += 1;
         sumQ += mag(p.q());
         sumM += p.mass();
-        sumU += p.U();
-        sumUU += magSqr(p.U());
     }
     reduce(n, sumOp<scalar>());
     reduce(sumQ, sumOp<scalar>());
     reduce(sumM, sumOp<scalar>());
-    reduce(sumU, sumOp<vector>());
-    reduce(sumUU, sumOp<scalar>());
     if (n == 0 || sumQ == 0)
     {
         return;
@@ -79,7 +74,7 @@ void Foam::PeriodicCoulomb<CloudType>::reportTimeStep() const
     const scalar k = kernel_->k();
     // The larger of the measured agitation and the stationary estimate
     // of Eq. (25) (the smaller time step: the cloud starts at rest)
-    const scalar qp2Measured = 0.5*max(sumUU/n - magSqr(sumU/n), scalar(0));
+    const scalar qp2Measured = this->owner().agitation();
     const scalar qp2Estimate =
         coulombCollision::agitationEstimate(k, Q, m, density);
     const bool measured = qp2Measured >= qp2Estimate;
@@ -158,33 +153,10 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
 {
     reportTimeStep();
 
-    List<pointField> allX;
-    List<scalarField> allQ;
-    this->gatherCharges(allX, allQ);
-
-    // All processors' parcels in one list, this processor's first offset
-    const label me = Pstream::myProcNo();
-    label n = 0, offset = 0;
-    forAll(allX, proci)
-    {
-        if (proci == me)
-        {
-            offset = n;
-        }
-        n += allX[proci].size();
-    }
-    pointField x(n);
-    scalarField q(n);
-    n = 0;
-    forAll(allX, proci)
-    {
-        forAll(allX[proci], i)
-        {
-            x[n] = allX[proci][i];
-            q[n] = allQ[proci][i];
-            ++n;
-        }
-    }
+    pointField x;
+    scalarField q;
+    label offset = 0;
+    this->gatherCharges(x, q, offset);
 
     List<vector> f;
     kernel_->compute(x, q, f);
@@ -208,11 +180,10 @@ Foam::scalar Foam::PeriodicCoulomb<CloudType>::energy() const
         return 0;
     }
 
-    List<pointField> allX;
-    List<scalarField> allQ;
-    this->gatherCharges(allX, allQ);
-    const pointField x(ListListOps::combine<pointField>(allX, accessOp<pointField>()));
-    const scalarField q(ListListOps::combine<scalarField>(allQ, accessOp<scalarField>()));
+    pointField x;
+    scalarField q;
+    label offset = 0;
+    this->gatherCharges(x, q, offset);
 
     return ewald->energy(x, q);
 }

@@ -121,11 +121,11 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::surfaceField
     const parcelType& p
 )
 {
-    const vector& s = p.semiAxes();
+    // Spheres without the elliptic integrals (a contact hot path)
     const scalar S =
-        (s.x() == s.y() && s.y() == s.z())
-      ? 4*constant::mathematical::pi*sqr(s.x())
-      : ellipsoid::surfaceArea(s);
+        p.isSphere()
+      ? 4*constant::mathematical::pi*sqr(p.semiAxes().x())
+      : ellipsoid::surfaceArea(p.semiAxes());
     return p.q()/(triboCharging::eps0*S);
 }
 
@@ -186,7 +186,8 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
         if (wallImages_)
         {
             // Image -q_A of the centroid mirrored in the wall plane
-            // (through the wall point x2, normal n)
+            // (through the wall point x2, normal n): the grounded plane's
+            // method of images (Jackson, Classical Electrodynamics 2.1)
             const point xImage = pc.xA + 2*((c.x2 - pc.xA) & c.n)*c.n;
             const vector r = xc - xImage;
             En -=
