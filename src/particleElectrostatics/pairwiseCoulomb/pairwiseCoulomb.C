@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pairwiseCoulomb.H"
+#include "cutoffPairs.H"
 #include "mathematicalConstants.H"
 #include "error.H"
 
@@ -156,92 +157,18 @@ void Foam::pairwiseCoulomb::addFieldsWithinCutoff
     const label selfOffset
 ) const
 {
-    if (!(rCut > 0) || !std::isfinite(rCut))
-    {
-        FatalErrorInFunction
-            << "Cutoff radius " << rCut << " must be finite and > 0"
-            << exit(FatalError);
-    }
-    const label nS = xS.size();
-    if (nS == 0 || xT.empty())
-    {
-        return;
-    }
-
-    // Grid over the sources' bounding box: cells of at least rCut (the
-    // 27 neighbours then hold every source in range), coarsened so that
-    // there are at most ~4 cells per source
-    point lo(xS[0]), hi(xS[0]);
-    for (const point& x : xS)
-    {
-        lo = min(lo, x);
-        hi = max(hi, x);
-    }
-    const vector span(hi - lo);
-    scalar h = rCut;
-    while
+    forPairsWithinCutoff
     (
-        (std::floor(span.x()/h) + 1)*(std::floor(span.y()/h) + 1)
-       *(std::floor(span.z()/h) + 1) > 4.0*nS + 64
-    )
-    {
-        h *= 1.5;
-    }
-    const label nx = label(std::floor(span.x()/h)) + 1;
-    const label ny = label(std::floor(span.y()/h)) + 1;
-    const label nz = label(std::floor(span.z()/h)) + 1;
-
-    auto cellOf = [&](const point& x, label& i, label& j, label& k)
-    {
-        i = min(max(label(std::floor((x.x() - lo.x())/h)), label(0)), nx - 1);
-        j = min(max(label(std::floor((x.y() - lo.y())/h)), label(0)), ny - 1);
-        k = min(max(label(std::floor((x.z() - lo.z())/h)), label(0)), nz - 1);
-    };
-
-    // Linked lists of the sources of each cell
-    labelList head(nx*ny*nz, -1);
-    labelList next(nS, -1);
-    for (label s = 0; s < nS; ++s)
-    {
-        label i, j, k;
-        cellOf(xS[s], i, j, k);
-        const label c = (k*ny + j)*nx + i;
-        next[s] = head[c];
-        head[c] = s;
-    }
-
-    const scalar rCut2 = sqr(rCut);
-    forAll(xT, t)
-    {
-        const point& xt = xT[t];
-        const label self = selfOffset >= 0 ? t + selfOffset : -1;
-        label i, j, k;
-        cellOf(xt, i, j, k);
-        vector Et(Zero);
-        for (label kk = max(k - 1, label(0)); kk <= min(k + 1, nz - 1); ++kk)
-        for (label jj = max(j - 1, label(0)); jj <= min(j + 1, ny - 1); ++jj)
-        for (label ii = max(i - 1, label(0)); ii <= min(i + 1, nx - 1); ++ii)
+        xT, xS, rCut, selfOffset,
+        [&](const label t, const label s, const vector& r, const scalar r2)
         {
-            for (label s = head[(kk*ny + jj)*nx + ii]; s >= 0; s = next[s])
+            if (r2 == 0)
             {
-                if (s == self)
-                {
-                    continue;
-                }
-                const vector r = xt - xS[s];
-                const scalar r2 = magSqr(r);
-                if (r2 < rCut2)
-                {
-                    if (r2 == 0)
-                    {
-                        coincident(t, s, xt);
-                    }
-                    Et += force(r, r2, qS[s]);
-                }
+                coincident(t, s, xT[t]);
             }
+            ET[t] += force(r, r2, qS[s]);
         }
-        ET[t] += Et;
-    }
+    );
 }
 
 

@@ -1,0 +1,91 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "MeshPoisson.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::MeshPoisson<CloudType>::MeshPoisson
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    DirectCoulomb<CloudType>(dict, owner, typeName),
+    solver_(new meshPoisson(owner.mesh(), this->coeffDict()))
+{}
+
+
+template<class CloudType>
+Foam::MeshPoisson<CloudType>::MeshPoisson
+(
+    const MeshPoisson<CloudType>& em
+)
+:
+    DirectCoulomb<CloudType>(em),
+    solver_(em.solver_)
+{}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::MeshPoisson<CloudType>::calculate()
+{
+    List<pointField> allX;
+    List<scalarField> allQ;
+    this->gatherCharges(allX, allQ);
+
+    pointField xS;
+    scalarField qS;
+    label offset = 0;
+    this->combine(allX, allQ, xS, qS, offset);
+
+    // The cells of the local parcels, and the centres of all parcels'
+    // cells (the cellCentroid correction, Rasera Eq. 31, compares them)
+    const label n = this->owner().size();
+    labelList cells(n);
+    List<pointField> allC(Pstream::nProcs());
+    pointField& c = allC[Pstream::myProcNo()];
+    c.setSize(n);
+    const volVectorField& C = this->owner().mesh().C();
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        cells[i] = p.cell();
+        c[i] = C[p.cell()];
+        ++i;
+    }
+    pointField cS;
+    if (solver_->correction() == meshPoisson::correctionType::cellCentroid)
+    {
+        Pstream::gatherList(allC);
+        Pstream::scatterList(allC);
+        scalarField dummy;
+        label o;
+        this->combine(allC, allQ, cS, dummy, o);
+    }
+
+    vectorField E(n, Zero);
+    solver_->fields(xS, qS, offset, cells, cS, E);
+
+    const scalarField& q = allQ[Pstream::myProcNo()];
+    vectorField f(q*E);
+    if (this->contactCorrection_ != 0)
+    {
+        this->correctContactPairs(allX, allQ, f);
+    }
+
+    i = 0;
+    for (auto& p : this->owner())
+    {
+        p.E() = E[i];
+        p.fE() = f[i];
+        ++i;
+    }
+}
+
+
+// ************************************************************************* //

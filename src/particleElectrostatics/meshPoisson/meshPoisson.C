@@ -1,0 +1,793 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "meshPoisson.H"
+#include "cutoffPairs.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "fvMatrices.H"
+#include "wallPolyPatch.H"
+#include "cyclicPolyPatch.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "mathematicalConstants.H"
+#include "pairwiseCoulomb.H"
+#include "emptyPolyPatch.H"
+#include "ListListOps.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(meshPoisson, 0);
+}
+
+const Foam::Enum<Foam::meshPoisson::correctionType>
+Foam::meshPoisson::correctionTypeNames
+({
+    { correctionType::shaped, "shaped" },
+    { correctionType::cellCentroid, "cellCentroid" },
+});
+
+
+namespace
+{
+    // Volt = kg m^2 s^-3 A^-1
+    const Foam::dimensionSet dimPotential(1, 2, -3, 0, 0, -1, 0);
+    const Foam::dimensionSet dimChargeDensity(0, -3, 1, 0, 0, 1, 0);
+
+    Foam::wordList defaultPhiTypes(const Foam::fvMesh& mesh)
+    {
+        using namespace Foam;
+        const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+        wordList types(pbm.size(), zeroGradientFvPatchScalarField::typeName);
+        forAll(pbm, patchi)
+        {
+            if (isA<wallPolyPatch>(pbm[patchi]))
+            {
+                types[patchi] = fixedValueFvPatchScalarField::typeName;
+            }
+            else if (polyPatch::constraintType(pbm[patchi].type()))
+            {
+                types[patchi] = pbm[patchi].type();
+            }
+        }
+        return types;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::meshPoisson::readRadius() const
+{
+    const word key
+    (
+        correction_ == correctionType::shaped ? "radius" : "rCut"
+    );
+    const scalar r = coeffs_.lookupOrDefault<scalar>(key, -1);
+    if (!(r > 0) || !std::isfinite(r))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry " << key << " in " << coeffs_.name().c_str() << " is "
+            << (coeffs_.found(key) ? "out of range" : "missing")
+            << ": it must be given, finite and > 0 [m] ("
+            << (correction_ == correctionType::shaped
+                ? "radius of the deposited charge shape, a few cell sizes"
+                : "near-field correction cutoff")
+            << ")" << exit(FatalIOError);
+    }
+    return r;
+}
+
+
+void Foam::meshPoisson::findPeriodicShifts()
+{
+    // One translation per cyclic pair (owner side). A processor may hold
+    // none of a patch's faces: the vector is the largest over processors
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        const cyclicPolyPatch* cpp = isA<cyclicPolyPatch>(pbm[patchi]);
+        if (!cpp || !cpp->owner())
+        {
+            continue;
+        }
+        if (cpp->transform() == coupledPolyPatch::ROTATIONAL)
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "Cyclic patch " << cpp->name() << " is rotational: the "
+                << "mesh far field supports translational cyclics only"
+                << exit(FatalIOError);
+        }
+        vector s(cpp->separationVector());
+        if (!cpp->size())
+        {
+            s = Zero;
+        }
+        reduce(s, maxMagSqrOp<vector>());
+        if (magSqr(s) > 0)
+        {
+            periodicShifts_.append(s);
+        }
+    }
+    if (periodicShifts_.size() > 3)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "The mesh has " << periodicShifts_.size() << " cyclic "
+            << "translations; at most 3 are supported" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::meshPoisson::binCells()
+{
+    const vectorField& C = mesh_.C().primitiveField();
+    binSize_ = radius_;
+    binOrigin_ = Zero;
+    nBins_ = Vector<label>(1, 1, 1);
+    binCells_.clear();
+    if (C.empty())
+    {
+        return;
+    }
+    point lo(C[0]), hi(C[0]);
+    for (const point& c : C)
+    {
+        lo = min(lo, c);
+        hi = max(hi, c);
+    }
+    // At most ~ one bin per cell
+    while
+    (
+        (std::floor((hi.x() - lo.x())/binSize_) + 1)
+       *(std::floor((hi.y() - lo.y())/binSize_) + 1)
+       *(std::floor((hi.z() - lo.z())/binSize_) + 1) > C.size() + 64
+    )
+    {
+        binSize_ *= 1.5;
+    }
+    binOrigin_ = lo;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nBins_[d] = label(std::floor((hi[d] - lo[d])/binSize_)) + 1;
+    }
+    labelList count(nBins_.x()*nBins_.y()*nBins_.z(), 0);
+    labelList bin(C.size());
+    forAll(C, celli)
+    {
+        label b = 0;
+        for (direction d = 3; d-- > 0;)
+        {
+            const label i = min
+            (
+                max(label(std::floor((C[celli][d] - lo[d])/binSize_)), 0),
+                nBins_[d] - 1
+            );
+            b = b*nBins_[d] + i;
+        }
+        bin[celli] = b;
+        ++count[b];
+    }
+    binCells_.setSize(count.size());
+    forAll(count, b)
+    {
+        binCells_[b].setSize(count[b]);
+        count[b] = 0;
+    }
+    forAll(bin, celli)
+    {
+        binCells_[bin[celli]][count[bin[celli]]++] = celli;
+    }
+}
+
+
+void Foam::meshPoisson::addPeriodicCopies
+(
+    pointField& x,
+    scalarField& q,
+    labelList& origin,
+    const scalar dist
+) const
+{
+    const label nReal = x.size();
+    origin = identity(nReal);
+    if (periodicShifts_.empty())
+    {
+        return;
+    }
+
+    const boundBox bb(mesh_.points(), false);
+    DynamicList<point> gx(x);
+    DynamicList<scalar> gq(q);
+    DynamicList<label> go(origin);
+
+    // Every combination of -1, 0, +1 translations but the identity
+    label nComb = 1;
+    forAll(periodicShifts_, d)
+    {
+        nComb *= 3;
+    }
+    for (label comb = 0; comb < nComb; ++comb)
+    {
+        vector shift(Zero);
+        bool identityShift = true;
+        label c = comb;
+        forAll(periodicShifts_, d)
+        {
+            const label n = c % 3 - 1;
+            c /= 3;
+            if (n != 0)
+            {
+                shift += scalar(n)*periodicShifts_[d];
+                identityShift = false;
+            }
+        }
+        if (identityShift)
+        {
+            continue;
+        }
+        for (label i = 0; i < nReal; ++i)
+        {
+            const point y(x[i] + shift);
+            const point yc(bb.nearest(y));
+            if (magSqr(y - yc) < sqr(dist))
+            {
+                gx.append(y);
+                gq.append(q[i]);
+                go.append(i);
+            }
+        }
+    }
+    x.transfer(gx);
+    q.transfer(gq);
+    origin.transfer(go);
+}
+
+
+void Foam::meshPoisson::cellsNear
+(
+    const point& y,
+    const scalar R,
+    DynamicList<label>& cells,
+    DynamicList<scalar>& dist
+) const
+{
+    cells.clear();
+    dist.clear();
+    const vectorField& C = mesh_.C().primitiveField();
+    Vector<label> lo, hi;
+    for (direction d = 0; d < 3; ++d)
+    {
+        lo[d] = max(label(std::floor((y[d] - R - binOrigin_[d])/binSize_)), 0);
+        hi[d] = min
+        (
+            label(std::floor((y[d] + R - binOrigin_[d])/binSize_)),
+            nBins_[d] - 1
+        );
+    }
+    for (label k = lo.z(); k <= hi.z(); ++k)
+    for (label j = lo.y(); j <= hi.y(); ++j)
+    for (label i = lo.x(); i <= hi.x(); ++i)
+    {
+        for (const label celli : binCells_[(k*nBins_.y() + j)*nBins_.x() + i])
+        {
+            const scalar r2 = magSqr(C[celli] - y);
+            if (r2 < R*R)
+            {
+                cells.append(celli);
+                dist.append(std::sqrt(r2));
+            }
+        }
+    }
+}
+
+
+void Foam::meshPoisson::collectWallFaces()
+{
+    // All processors hold every wall face (centre, outward unit normal,
+    // circumradius, image sign), so they all find the same images
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const pointField& pts = mesh_.points();
+    DynamicList<point> c;
+    DynamicList<vector> n;
+    DynamicList<scalar> r, sign;
+    forAll(pbm, patchi)
+    {
+        const polyPatch& pp = pbm[patchi];
+        const fvPatchScalarField& pf = Phi_.boundaryField()[patchi];
+        if (pp.coupled() || isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        // Grounded or fixed potential: opposite image; insulating: equal
+        const scalar sgn =
+            pf.fixesValue() ? -1
+          : isA<zeroGradientFvPatchScalarField>(pf) ? 1 : 0;
+        if (sgn == 0)
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const face& f = pp[i];
+            const point fc(pp.faceCentres()[i]);
+            scalar rf = 0;
+            for (const label pi : f)
+            {
+                rf = max(rf, mag(pts[pi] - fc));
+            }
+            c.append(fc);
+            n.append(normalised(pp.faceAreas()[i]));
+            r.append(rf);
+            sign.append(sgn);
+        }
+    }
+    List<pointField> allC(Pstream::nProcs());
+    List<vectorField> allN(Pstream::nProcs());
+    List<scalarField> allR(Pstream::nProcs()), allS(Pstream::nProcs());
+    allC[Pstream::myProcNo()] = c;
+    allN[Pstream::myProcNo()] = n;
+    allR[Pstream::myProcNo()] = r;
+    allS[Pstream::myProcNo()] = sign;
+    Pstream::gatherList(allC);
+    Pstream::scatterList(allC);
+    Pstream::gatherList(allN);
+    Pstream::scatterList(allN);
+    Pstream::gatherList(allR);
+    Pstream::scatterList(allR);
+    Pstream::gatherList(allS);
+    Pstream::scatterList(allS);
+    wallC_ = ListListOps::combine<pointField>(allC, accessOp<pointField>());
+    wallN_ = ListListOps::combine<vectorField>(allN, accessOp<vectorField>());
+    wallR_ = ListListOps::combine<scalarField>(allR, accessOp<scalarField>());
+    wallSign_ =
+        ListListOps::combine<scalarField>(allS, accessOp<scalarField>());
+    wallRMax_ = wallR_.size() ? max(wallR_) : 0;
+}
+
+
+void Foam::meshPoisson::addWallImages
+(
+    pointField& x,
+    scalarField& q,
+    labelList& origin
+) const
+{
+    // The images of each shape in the walls within its radius (method of
+    // images for a plane; for two or three perpendicular planes, an edge or
+    // a corner, also the images of the images). Deposited together, a
+    // shape cut by the walls and its images solve the wall problem exactly
+    // for planar walls, and the near-field correction stays compact: the
+    // same free-space kernel around every image
+    if (wallC_.empty())
+    {
+        return;
+    }
+    const label n0 = x.size();
+    const scalar R = radius_;
+    List<DynamicList<label>> near(n0);
+    forPairsWithinCutoff
+    (
+        SubList<point>(x, n0), wallC_, R + wallRMax_, -1,
+        [&](const label t, const label f, const vector& r, const scalar)
+        {
+            // r = x - c_f; the wall lies at distance d along n_f
+            const scalar d = -(r & wallN_[f]);
+            if (d > 0 && d < R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
+            {
+                near[t].append(f);
+            }
+        }
+    );
+
+    DynamicList<point> gx(x);
+    DynamicList<scalar> gq(q);
+    DynamicList<label> go(origin);
+    for (label i = 0; i < n0; ++i)
+    {
+        // Distinct planes (normal, distance, sign), nearest first, <= 3
+        DynamicList<vector> pn;
+        DynamicList<scalar> pd, ps;
+        for (const label f : near[i])
+        {
+            const scalar d = (wallC_[f] - x[i]) & wallN_[f];
+            bool known = false;
+            forAll(pn, k)
+            {
+                if
+                (
+                    (pn[k] & wallN_[f]) > 1 - 1e-9
+                 && mag(pd[k] - d) < 1e-9*R
+                )
+                {
+                    known = true;
+                    break;
+                }
+            }
+            if (!known)
+            {
+                pn.append(wallN_[f]);
+                pd.append(d);
+                ps.append(wallSign_[f]);
+            }
+        }
+        if (pn.empty())
+        {
+            continue;
+        }
+        // Keep the three nearest
+        labelList order;
+        sortedOrder(pd, order);
+        const label np = min(order.size(), label(3));
+
+        // Subsets of the planes: single reflections always; compositions
+        // only of mutually perpendicular planes (exact there)
+        for (label mask = 1; mask < (1 << np); ++mask)
+        {
+            point y(x[i]);
+            scalar sgn = 1;
+            bool ok = true;
+            for (label a = 0; a < np && ok; ++a)
+            {
+                if (!(mask & (1 << a)))
+                {
+                    continue;
+                }
+                for (label b = a + 1; b < np; ++b)
+                {
+                    if
+                    (
+                        (mask & (1 << b))
+                     && mag(pn[order[a]] & pn[order[b]]) > 1e-6
+                    )
+                    {
+                        ok = false;
+                    }
+                }
+                const label k = order[a];
+                // Plane through x + d n: y -> y - 2 ((y - p) . n) n
+                const point p(x[i] + pd[k]*pn[k]);
+                y -= 2*((y - p) & pn[k])*pn[k];
+                sgn *= ps[k];
+            }
+            if (ok)
+            {
+                gx.append(y);
+                gq.append(sgn*q[i]);
+                go.append(origin[i]);
+            }
+        }
+    }
+    x.transfer(gx);
+    q.transfer(gq);
+    origin.transfer(go);
+}
+
+
+void Foam::meshPoisson::depositShaped
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const labelUList& origin,
+    const label nReal
+)
+{
+    const scalarField& V = mesh_.V().field();
+    const scalar R = radius_;
+
+    // Weights: the S2 density (R - r) times the cell volume, normalised
+    // over all cells of all processors (conservative deposition)
+    DynamicList<label> near;
+    DynamicList<scalar> dist;
+    scalarField wSum(nReal, Zero);
+    forAll(x, i)
+    {
+        cellsNear(x[i], R, near, dist);
+        scalar& w = wSum[origin[i]];
+        forAll(near, j)
+        {
+            w += (R - dist[j])*V[near[j]];
+        }
+    }
+    Pstream::listCombineGather(wSum, plusEqOp<scalar>());
+    Pstream::listCombineScatter(wSum);
+
+    forAll(wSum, i)
+    {
+        if (!(wSum[i] > 0))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "No cell centre lies within radius " << R << " m of the "
+                << "charge at " << x[i] << ": entry radius in "
+                << coeffs_.name().c_str() << " must exceed the cell size "
+                << "(a few cell sizes for accuracy)" << exit(FatalIOError);
+        }
+    }
+
+    scalarField& rho = rhoQ_.primitiveFieldRef();
+    rho = 0;
+    forAll(x, i)
+    {
+        const scalar qw = q[i]/wSum[origin[i]];
+        cellsNear(x[i], R, near, dist);
+        forAll(near, j)
+        {
+            rho[near[j]] += qw*(R - dist[j]);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
+:
+    mesh_(mesh),
+    coeffs_(coeffs),
+    epsilonR_(coeffs.lookupOrDefault<scalar>("epsilonR", 1)),
+    correction_
+    (
+        correctionTypeNames.lookupOrDefault
+        (
+            "correction",
+            coeffs,
+            correctionType::shaped
+        )
+    ),
+    radius_(readRadius()),
+
+    interpolationScheme_
+    (
+        coeffs.lookupOrDefault<word>
+        (
+            "interpolation",
+            correction_ == correctionType::shaped ? "cellPoint" : "cell"
+        )
+    ),
+    solveInterval_(coeffs.lookupOrDefault<label>("solveInterval", 1)),
+    nEvaluations_(0),
+    periodicShifts_(),
+    Phi_
+    (
+        IOobject
+        (
+            "Phi",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimPotential, Zero),
+        defaultPhiTypes(mesh)
+    ),
+    rhoQ_
+    (
+        IOobject
+        (
+            "rhoQ",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimChargeDensity, Zero)
+    ),
+    E_
+    (
+        IOobject
+        (
+            "E",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        -fvc::grad(Phi_)
+    ),
+    wallRMax_(0),
+    binOrigin_(Zero),
+    binSize_(1),
+    nBins_(1, 1, 1)
+{
+    if (!(epsilonR_ > 0) || !std::isfinite(epsilonR_))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry epsilonR (relative permittivity of the medium) = "
+            << epsilonR_ << " must be > 0" << exit(FatalIOError);
+    }
+    if (solveInterval_ < 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry solveInterval = " << solveInterval_ << " must be >= 1 "
+            << "(solve the potential every n-th force evaluation)"
+            << exit(FatalIOError);
+    }
+    const fvSolution& fvSol = mesh;
+    if (!fvSol.subDict("solvers").found(Phi_.name()))
+    {
+        FatalIOErrorInFunction(fvSol)
+            << "system/fvSolution has no solver entry for " << Phi_.name()
+            << " (the electric potential of the mesh far field), e.g."
+            << nl << "    Phi { solver PCG; preconditioner DIC; "
+            << "tolerance 1e-10; relTol 0; }" << exit(FatalIOError);
+    }
+
+    findPeriodicShifts();
+    binCells();
+
+    if (correction_ == correctionType::shaped)
+    {
+        collectWallFaces();
+    }
+
+    Info<< "    Mesh far field: div(eps grad Phi) = -rho_q, epsilonR = "
+        << epsilonR_ << ", correction " << correctionTypeNames[correction_]
+        << (correction_ == correctionType::shaped ? " (S2 radius " : " (rCut ")
+        << radius_ << " m";
+    if (correction_ == correctionType::shaped)
+    {
+        Info<< ", images in " << wallC_.size() << " wall faces";
+    }
+    Info<< "), interpolation " << interpolationScheme_
+        << ", solved every " << solveInterval_ << " evaluation(s)";
+    if (periodicShifts_.size())
+    {
+        Info<< ", periodic translations " << periodicShifts_;
+    }
+    if (Phi_.needReference())
+    {
+        Info<< ", neutralising background (no fixed potential)";
+    }
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::meshPoisson::solve()
+{
+    // Permittivity [F/m = A^2 s^4 kg^-1 m^-3]
+    const dimensionedScalar eps
+    (
+        "eps",
+        dimensionSet(-1, -3, 4, 0, 0, 2, 0),
+        pairwiseCoulomb::vacuumPermittivity*epsilonR_
+    );
+
+    volScalarField rho(rhoQ_);
+    if (Phi_.needReference())
+    {
+        // Neutralising background: the potential of a periodic or
+        // insulated box exists only for zero net charge
+        rho -= fvc::domainIntegrate(rho)/gSum(mesh_.V());
+    }
+
+    fvScalarMatrix PhiEqn
+    (
+        fvm::laplacian(eps, Phi_) + rho
+    );
+    // Only used when no patch fixes the potential
+    PhiEqn.setReference(Pstream::master() ? 0 : -1, 0);
+    PhiEqn.solve();
+
+    E_ = -fvc::grad(Phi_);
+    EInterp_ = interpolation<vector>::New(interpolationScheme_, E_);
+}
+
+
+void Foam::meshPoisson::fields
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const label myStart,
+    const labelUList& cells,
+    const UList<point>& cellCentres,
+    UList<vector>& E
+)
+{
+    const label nReal = x.size();
+    const label nLocal = cells.size();
+
+    // Sources with their periodic copies
+    pointField xs(x);
+    scalarField qs(q);
+    labelList origin;
+    addPeriodicCopies(xs, qs, origin, 1.5*radius_);
+    if (correction_ == correctionType::shaped)
+    {
+        addWallImages(xs, qs, origin);
+    }
+
+    if (nEvaluations_++ % solveInterval_ == 0 || !EInterp_.valid())
+    {
+        if (correction_ == correctionType::shaped)
+        {
+            depositShaped(xs, qs, origin, nReal);
+        }
+        else
+        {
+            // Each charge in its cell (Rasera 2022 section 2.3)
+            scalarField& rho = rhoQ_.primitiveFieldRef();
+            rho = 0;
+            const scalarField& V = mesh_.V().field();
+            forAll(cells, i)
+            {
+                rho[cells[i]] += q[myStart + i]/V[cells[i]];
+            }
+        }
+        rhoQ_.correctBoundaryConditions();
+        solve();
+    }
+
+    const SubList<point> xT(x, nLocal, myStart);
+    forAll(xT, i)
+    {
+        E[i] = EInterp_->interpolate(xT[i], cells[i]);
+    }
+
+    // Near field: exact Coulomb minus what the mesh carries
+    const scalar k =
+        1/(4*constant::mathematical::pi*pairwiseCoulomb::vacuumPermittivity
+       *epsilonR_);
+
+    if (correction_ == correctionType::shaped)
+    {
+        forPairsWithinCutoff
+        (
+            xT, xs, radius_, myStart,
+            [&](const label t, const label s, const vector& r, const scalar r2)
+            {
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Two charges at one point " << xT[t]
+                        << exit(FatalError);
+                }
+                const scalar rm = std::sqrt(r2);
+                E[t] +=
+                    (k*qs[s]*shapedCorrection(rm/radius_)/(r2*rm))*r;
+            }
+        );
+    }
+    else
+    {
+        // Rasera Eq. 31: exact minus the centroid-to-centroid field of
+        // charges in other cells
+        pointField cs(cellCentres);
+        {
+            // Copies share the shift of their charge
+            cs.setSize(xs.size());
+            for (label i = nReal; i < xs.size(); ++i)
+            {
+                cs[i] = cellCentres[origin[i]] + (xs[i] - x[origin[i]]);
+            }
+        }
+        forPairsWithinCutoff
+        (
+            xT, xs, radius_, myStart,
+            [&](const label t, const label s, const vector& r, const scalar r2)
+            {
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Two charges at one point " << xT[t]
+                        << exit(FatalError);
+                }
+                E[t] += (k*qs[s]/(r2*std::sqrt(r2)))*r;
+                const vector rc(cellCentres[myStart + t] - cs[s]);
+                const scalar rc2 = magSqr(rc);
+                if (rc2 > 0)
+                {
+                    E[t] -= (k*qs[s]/(rc2*std::sqrt(rc2)))*rc;
+                }
+            }
+        );
+    }
+}
+
+
+// ************************************************************************* //
