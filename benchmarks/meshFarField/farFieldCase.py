@@ -30,16 +30,16 @@ HEADER = """FoamFile
 {
     version     2.0;
     format      ascii;
-    class       dictionary;
+    class       %s;
     object      %s;
 }
 """
 
 
-def _write(path, obj, body):
+def _write(path, obj, body, cls="dictionary"):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
-        f.write(HEADER % obj + body)
+        f.write(HEADER % (cls, obj) + body)
 
 
 class FarFieldCase:
@@ -89,7 +89,7 @@ boundaryField
 {{
 {self.Phi}
 }}
-""")
+""", cls="volScalarField")
         dt = 1e-9
         _write(p + "/system/controlDict", "controlDict", f"""
 application chargedParticleFoam;

@@ -101,10 +101,16 @@ void Foam::meshPoisson::findPeriodicShifts()
                 << "mesh far field supports translational cyclics only"
                 << exit(FatalIOError);
         }
-        vector s(cpp->separationVector());
-        if (!cpp->size())
+        // The translation as found from the faces (blockMesh cyclics
+        // leave separationVector unset)
+        vector s(Zero);
+        if (cpp->size() && cpp->separated() && cpp->separation().size())
         {
-            s = Zero;
+            s = cpp->separation()[0];
+        }
+        else if (cpp->size())
+        {
+            s = cpp->separationVector();
         }
         reduce(s, maxMagSqrOp<vector>());
         if (magSqr(s) > 0)
@@ -663,7 +669,9 @@ void Foam::meshPoisson::solve()
     {
         // Neutralising background: the potential of a periodic or
         // insulated box exists only for zero net charge
-        rho -= fvc::domainIntegrate(rho)/gSum(mesh_.V());
+        rho -=
+            fvc::domainIntegrate(rho)
+           /dimensionedScalar("V", dimVolume, gSum(mesh_.V()));
     }
 
     fvScalarMatrix PhiEqn
