@@ -1,0 +1,36 @@
+#!/usr/bin/env python3
+"""Write constant/cloudPositions: N random parcel positions (fixed seed) in
+the box  x0 < x < x1, y0 < y < y1, z0 < z < z1  [m].
+
+    makePositions.py [--n 300] [--box x0 x1 y0 y1 z0 z1]
+"""
+import argparse
+
+import numpy as np
+
+ap = argparse.ArgumentParser(description=__doc__)
+ap.add_argument("--n", type=int, default=300)
+ap.add_argument("--box", type=float, nargs=6,
+                default=[0.5e-3, 4.5e-3, 0.5e-3, 9.5e-3, 10e-3, 18e-3])
+ap.add_argument("--out", default="constant/cloudPositions")
+a = ap.parse_args()
+
+rng = np.random.default_rng(20080625)
+lo, hi = np.array(a.box[0::2]), np.array(a.box[1::2])
+x = lo + (hi - lo)*rng.random((a.n, 3))
+
+with open(a.out, "w") as f:
+    f.write("""FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       vectorField;
+    location    "constant";
+    object      cloudPositions;
+}
+
+""")
+    f.write(f"{a.n}\n(\n")
+    for p in x:
+        f.write("(%.9g %.9g %.9g)\n" % tuple(p))
+    f.write(")\n")
