@@ -57,22 +57,25 @@ copyCase gasSettling "$work/closed"
 grep -E '^(PASS|FAIL): ' "$work/closed/results.txt" | sed 's/gasSettling\./gasCoupled.closed./'
 
 # -- Momentum exchange in a fully periodic box, no gravity --
-# Tolerance 2e-2: the particles' momentum loss equals what the coupled
-# source hands the gas each step, but DPMFoam's momentum equation is
-# alpha_c DU_c/Dt (not d(alpha_c U_c)/dt: the ddt(alpha_c) U_c terms are
-# O(alpha_p) = 1e-3 here), the explicit part of the source reaches U_c
-# through the flux reconstruction of the pressure equation, and the
-# semi-implicit source uses the gas velocity of the previous step: a few
-# 1e-3 in all (measured value in the PASS line).
+# With the explicit source (sourceTerms U explicit 1) the gas receives each
+# step exactly the momentum the coupled forces took from the particles
+# (UTrans/dt). What remains: DPMFoam's momentum equation is
+# alpha_c DU_c/Dt, not d(alpha_c U_c)/dt (the ddt(alpha_c) U_c terms are
+# O(alpha_p) = 1e-3 here), the source reaches U_c through the flux
+# reconstruction of the pressure equation, and solver tolerances: measured
+# 4e-4, tolerance 5e-3. (DPMFoam's semiImplicit source, the tutorial's
+# default, adds UCoeff (U_c,old - U_c,new)/dt, which the particles never
+# see: not conservative, 11 % here with dt/tau_p ~ 1/40 and mass loading 1.7.)
 copyCase gasSettling "$work/periodic"
 cd "$work/periodic" || exit 1
 cp system/blockMeshDict.periodic system/blockMeshDict
 sed -i -E 's/^value .*/value           (0 0 0);/' constant/g
 sed -i -E 's/^( *U0 +).*/\1(0 0 -0.3);/' constant/cloudProperties
+sed -i -E 's/^( *U +)semiImplicit 1;/\1explicit 1;/' constant/cloudProperties
 $PY makePositions.py
 run blockMesh blockMesh \
     && run chargedDPMFoam chargedDPMFoam \
     && run postProcess.C postProcess -func writeCellCentres -latestTime \
     && run postProcess.V postProcess -func writeCellVolumes -latestTime \
     || fail "gasCoupled.periodic.run (a step failed; see $work/periodic/log.*)"
-$PY gasSettling.py . --momentum "(0 0 -0.3)" 2e-2 | sed 's/gasSettling\./gasCoupled.periodic./'
+$PY gasSettling.py . --momentum "(0 0 -0.3)" 5e-3 | sed 's/gasSettling\./gasCoupled.periodic./'

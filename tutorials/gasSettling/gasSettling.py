@@ -63,6 +63,9 @@ print(("PASS" if last == nInj else "FAIL")
 
 times = sorted((d for d in glob.glob("[0-9]*") if d != "0"
                 and os.path.isfile(os.path.join(d, "U.air"))), key=float)
+if not times:
+    print("FAIL: gasSettling.fields (no time with U.air written)")
+    raise SystemExit(1)
 t = times[-1]
 U = internal_field(os.path.join(t, "U.air"))
 C = internal_field(os.path.join(t, "C"))
