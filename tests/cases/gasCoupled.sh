@@ -79,3 +79,17 @@ run blockMesh blockMesh \
     && run postProcess.V postProcess -func writeCellVolumes -latestTime \
     || fail "gasCoupled.periodic.run (a step failed; see $work/periodic/log.*)"
 $PY gasSettling.py . --momentum "(0 0 -0.3)" 5e-3 | sed 's/gasSettling\./gasCoupled.periodic./'
+
+# -- Bad input: alphaMax out of (0, 1) stops the run naming the entry --
+copyCase gasSettling "$work/badAlphaMax"
+cd "$work/badAlphaMax" || exit 1
+sed -i -E 's/^( *alphaMax +).*/\11.5;/' constant/cloudProperties
+$PY makePositions.py
+run blockMesh blockMesh
+if run chargedDPMFoam chargedDPMFoam
+then
+    fail "gasCoupled.badAlphaMax (alphaMax 1.5 accepted)"
+else
+    check gasCoupled.badAlphaMax "(alphaMax 1.5: FatalIOError naming the entry)" \
+        grep -q "Entry alphaMax = 1.5 .* out of range (0, 1)" log.chargedDPMFoam
+fi
