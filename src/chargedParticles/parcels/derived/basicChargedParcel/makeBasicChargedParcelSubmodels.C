@@ -29,6 +29,7 @@ Description
 #include "MeshPoisson.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
+#include "EllipsoidDragForce.H"
 #include "NoTriboCharging.H"
 #include "RaseraTriboCharging.H"
 
@@ -40,6 +41,7 @@ makeCloudFunctionObjectType(ParticleHistory, basicChargedCloud);
 // Kinematic and colliding (OpenFOAM's sphere DEM: pairCollision)
 makeParcelForces(basicChargedCloud);
 makeParticleForceModelType(OscillatingFrameForce, basicChargedCloud);
+makeParticleForceModelType(EllipsoidDragForce, basicChargedCloud);
 makeParcelDispersionModels(basicChargedCloud);
 makeParcelInjectionModels(basicChargedCloud);
 makeInjectionModelType(ExplicitParcelInjection, basicChargedCloud);

@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""Checks of a gasSettling run (chargedDPMFoam), one PASS:/FAIL: line each.
+
+    gasSettling.py <case> [--momentum U0 TOL]
+
+Always: the run ended, no NaN in the log, no parcel lost (the log's parcel
+count at the end equals the number of positions injected).
+
+Closed box (default): the gas is dragged down where the particles are and
+comes back up elsewhere: the mean vertical gas velocity under the particle
+column (x < 5 mm) is < 0 and in the other half > 0.
+
+--momentum U0 TOL (fully periodic box, no gravity, all parcels injected
+with velocity U0 = 'ux uy uz'): the momentum the particles lost is found in
+the gas: |P_gas + P_p - P_p0| <= TOL |P_p0 - P_p| with
+P_gas = sum rho_c alpha_c U_c V (cells), P_p from the log (cloud info),
+P_p0 = N n m U0.
+"""
+import argparse
+import glob
+import math
+import os
+import re
+
+import numpy as np
+
+
+def internal_field(path):
+    """internalField of an ASCII volField (uniform or nonuniform) as array."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[-+0-9.eE]+)", text)
+    if m:
+        v = np.array(m.group(1).strip("()").split(), dtype=float)
+        return v if v.size > 1 else float(v[0])
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    n, body = int(m.group(2)), text[m.end():]
+    if m.group(1) == "vector":
+        rows = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+        return np.array([r.split() for r in rows[:n]], dtype=float)
+    return np.array(body[:body.index(")")].split()[:n], dtype=float)
+
+
+def vec(s):
+    return np.array(s.strip("()").split(), dtype=float)
+
+
+ap = argparse.ArgumentParser(description=__doc__)
+ap.add_argument("case")
+ap.add_argument("--momentum", nargs=2, metavar=("U0", "TOL"))
+a = ap.parse_args()
+os.chdir(a.case)
+
+log = open("log.chargedDPMFoam").read()
+nInj = int(re.search(r"^(\d+)\s*$", open("constant/cloudPositions").read(), re.M).group(1))
+counts = re.findall(r"Current number of parcels\s*=\s*(\d+)", log)
+ended = log.rstrip().endswith("End")
+nan = re.search(r"\bnan\b", log, re.I) is not None
+print(("PASS" if ended and not nan else "FAIL")
+      + f": gasSettling.run (ended: {ended}, NaN in log: {nan})")
+last = int(counts[-1]) if counts else -1
+print(("PASS" if last == nInj else "FAIL")
+      + f": gasSettling.parcels ({last} parcels at the end of {nInj} injected)")
+
+times = sorted((d for d in glob.glob("[0-9]*") if d != "0"
+                and os.path.isfile(os.path.join(d, "U.air"))), key=float)
+if not times:
+    print("FAIL: gasSettling.fields (no time with U.air written)")
+    raise SystemExit(1)
+t = times[-1]
+U = internal_field(os.path.join(t, "U.air"))
+C = internal_field(os.path.join(t, "C"))
+V = internal_field(os.path.join(t, "V"))
+alpha = internal_field(os.path.join(t, "alpha.air"))
+rho = float(re.search(r"rho.air\s+([-+0-9.eE]+)",
+                      open("constant/transportProperties").read()).group(1))
+finite = bool(np.all(np.isfinite(U)))
+
+if a.momentum is None:
+    left = C[:, 0] < 5e-3
+    wLeft = float(np.average(U[left, 2], weights=V[left]))
+    wRight = float(np.average(U[~left, 2], weights=V[~left]))
+    ok = finite and wLeft < 0 < wRight
+    print(("PASS" if ok else "FAIL")
+          + f": gasSettling.gasDragged (t = {t} s: mean U_z = {wLeft:.4g} m/s"
+          f" under the particles, {wRight:.4g} m/s beside them)")
+else:
+    U0 = vec(a.momentum[0])
+    tol = float(a.momentum[1])
+    cp = open("constant/cloudProperties").read()
+    rho0 = float(re.search(r"rho0\s+([-+0-9.eE]+)", cp).group(1))
+    nParticle = float(re.search(r"nParticle\s+([-+0-9.eE]+)", cp).group(1))
+    d = float(re.search(r"value\s+([-+0-9.eE]+)", cp).group(1))
+    P0 = nInj*nParticle*rho0*math.pi/6*d**3*U0
+    # The cloud info of the step that ends at t
+    blocks = re.split(r"\nTime = ", log)
+    blk = [b for b in blocks if re.match(r"%s\s" % re.escape(t), b)][-1]
+    Pp = vec(re.search(r"Linear momentum\s*=\s*(\([^)]*\))", blk).group(1))
+    Pg = rho*np.sum((alpha*V)[:, None]*U, axis=0)
+    lost = P0 - Pp
+    err = float(np.linalg.norm(Pg - lost)/np.linalg.norm(lost))
+    ok = finite and err <= tol
+    print(("PASS" if ok else "FAIL")
+          + f": gasSettling.momentum (t = {t} s: particles lost"
+          f" {np.array2string(lost, precision=4)} kg m/s, gas gained"
+          f" {np.array2string(Pg, precision=4)}; relative mismatch"
+          f" {err:.3g} <= {tol})")
