@@ -12,7 +12,7 @@ $PY - "$work" "$top" <<'PYEOF'
 import os, sys
 import numpy as np
 work, top = sys.argv[1], sys.argv[2]
-sys.path.insert(0, top + "/benchmarks/meshFarField")
+sys.path.insert(0, top + "/applications/benchmarks/meshFarField")
 sys.path.insert(0, top + "/tests/tools")
 from farFieldCase import FarFieldCase
 import groundedBox as gb
