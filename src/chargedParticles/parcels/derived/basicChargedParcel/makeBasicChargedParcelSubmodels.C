@@ -26,6 +26,7 @@ Description
 #include "DirectCoulomb.H"
 #include "PeriodicCoulomb.H"
 #include "CutoffCoulomb.H"
+#include "ImageCoulomb.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "NoTriboCharging.H"
@@ -54,6 +55,7 @@ makeElectrostaticsModelType(NoElectrostatics, basicChargedCloud);
 makeElectrostaticsModelType(DirectCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(CutoffCoulomb, basicChargedCloud);
+makeElectrostaticsModelType(ImageCoulomb, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);
