@@ -124,6 +124,7 @@ def load(case):
     X[idx] = x
     return len(set(idx)) == N, F, X
 
+summary = []
 # The written fE is evaluated at the written positions (after the step's
 # move, ~1e-11 m): the references use those
 for name, rc in (("r0.1", 0.1), ("r0.3", 0.3), ("r1", 1.0), ("parallel", 0.3)):
@@ -141,9 +142,21 @@ for name, rc in (("r0.1", 0.1), ("r0.3", 0.3), ("r1", 1.0), ("parallel", 0.3)):
     exact = q0[:, None]*groundedBox.field(X, q0, 1.0)
     rel = np.linalg.norm(F - exact, axis=1)/np.linalg.norm(exact, axis=1)
     relS = np.linalg.norm(F - exact, axis=1)/np.sqrt(np.mean(np.sum(exact**2, axis=1)))
-    print(f"PASS: imageCloud.exactError.{name} (vs exact grounded box, groundedBox.py; "
+    # the same cutoff without any image (cutoffCoulomb), for context
+    r = X[:, None, :] - X[None, :, :]
+    rr = np.linalg.norm(r, axis=2) + np.eye(N)
+    w = np.where((rr < rc) & ~np.eye(N, dtype=bool), q0[None, :]/rr**3, 0)
+    F0 = k*q0[:, None]*np.einsum("ij,ijk->ik", w, r)
+    rel0 = np.linalg.norm(F0 - exact, axis=1)/np.sqrt(np.mean(np.sum(exact**2, axis=1)))
+    summary.append((rc, np.sqrt(np.mean(relS**2))))
+    print(f"INFO: imageCloud.exactError.{name} (vs exact grounded box, groundedBox.py; "
           f"rCut {rc} box lengths, {N} charges: per-charge |dF|/|F| rms {np.sqrt(np.mean(rel**2)):.3f} "
-          f"max {rel.max():.3f}; |dF|/rms|F| rms {np.sqrt(np.mean(relS**2)):.3f} max {relS.max():.3f}) [informative]")
+          f"max {rel.max():.3f}; |dF|/rms|F| rms {np.sqrt(np.mean(relS**2)):.3f} max {relS.max():.3f}; "
+          f"no images (cutoffCoulomb): |dF|/rms|F| rms {np.sqrt(np.mean(rel0**2)):.3f} max {rel0.max():.3f})")
+e = [v for _, v in sorted(summary)]
+good = len(e) == 3 and e[0] > e[1] > e[2]
+print(f"{'PASS' if good else 'FAIL'}: imageCloud.exactError (rms |dF|/rms|F| vs the exact grounded box falls with rCut: "
+      + ", ".join(f"{v:.3f}" for v in e) + " for rCut 0.1, 0.3, 1)")
 PYEOF
 
 # Bad input: a curved wall patch; a patch name that matches nothing
