@@ -68,6 +68,7 @@ except ImportError:  # pragma: no cover - plain numpy fallback
     _erfc = np.vectorize(math.erfc, otypes=[float])
 
 EPS0 = 8.8541878128e-12
+_COST = 60.0            # relative cost of a k-vector term vs a real-space pair
 K_COULOMB = 1.0/(4.0*math.pi*EPS0)
 
 
@@ -106,11 +107,13 @@ def _ewald(t, y, s, Lp, self_idx, tol):
     periodic charges (y, s), period Lp. self_idx[i] >= 0: source self_idx[i]
     in the home cell is target i itself and is left out."""
     V = float(np.prod(Lp))
+    T, S = len(t), len(y)
     p = math.sqrt(math.log(1.0/tol))
-    alpha = math.sqrt(math.pi)/V**(1.0/3.0)          # balances the two sums
+    # alpha balances the real-space pairs (~ T S rc^3/V) against the k-sum
+    # (~ (T + S) kmax^3 V): alpha V^(1/3) ~ (T S/(T + S))^(1/6)
+    alpha = max(math.sqrt(math.pi), (_COST*T*S/(T + S))**(1.0/6.0))/V**(1.0/3.0)
     rc = p/alpha
     kmax = 2.0*alpha*p
-    T = len(t)
     phi = np.zeros(T)
     E = np.zeros((T, 3))
 
@@ -120,7 +123,7 @@ def _ewald(t, y, s, Lp, self_idx, tol):
     sh = np.stack(np.meshgrid(*g, indexing="ij"), -1).reshape(-1, 3)*Lp
     sh = sh[np.linalg.norm(sh, axis=1) <= rc + 0.5*np.linalg.norm(Lp)]
     c2a = 2.0*alpha/math.sqrt(math.pi)
-    chunk = max(1, int(4e5//max(1, len(y))))
+    chunk = max(1, int(2e5//max(1, S)))
     for a in range(0, T, chunk):
         b = min(T, a + chunk)
         d = t[a:b, None, :] - y[None, :, :]
@@ -132,16 +135,18 @@ def _ewald(t, y, s, Lp, self_idx, tol):
             r2 = np.einsum("ijk,ijk->ij", r, r)
             if not np.any(v):
                 r2[rows, own[rows]] = np.inf
-            m = r2 < rc*rc
-            if not np.any(m):
+            ii, jj = np.nonzero(r2 < rc*rc)
+            if not len(ii):
                 continue
-            rr = np.sqrt(r2[m])
-            sm = np.broadcast_to(s, r2.shape)[m]
+            rv = r[ii, jj]
+            rr = np.sqrt(r2[ii, jj])
+            sm = s[jj]
             e = _erfc(alpha*rr)
             w = sm*(e/rr + c2a*np.exp(-(alpha*rr)**2))/(rr*rr)
-            ii = np.nonzero(m)[0] + a
-            np.add.at(phi, ii, sm*e/rr)
-            np.add.at(E, ii, w[:, None]*r[m])
+            n = b - a
+            phi[a:b] += np.bincount(ii, sm*e/rr, n)
+            for c in range(3):
+                E[a:b, c] += np.bincount(ii, w*rv[:, c], n)
 
     # Reciprocal space: half the k-space (k and -k alike), k != 0
     mm = np.ceil(kmax*Lp/(2.0*math.pi)).astype(int)

@@ -27,6 +27,7 @@ Description
 #include "PeriodicCoulomb.H"
 #include "CutoffCoulomb.H"
 #include "MeshPoisson.H"
+#include "ImageCoulomb.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "EllipsoidDragForce.H"
@@ -58,6 +59,7 @@ makeElectrostaticsModelType(DirectCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(CutoffCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(MeshPoisson, basicChargedCloud);
+makeElectrostaticsModelType(ImageCoulomb, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);

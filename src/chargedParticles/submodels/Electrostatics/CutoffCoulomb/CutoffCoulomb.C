@@ -10,10 +10,11 @@ template<class CloudType>
 Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
 (
     const dictionary& dict,
-    CloudType& owner
+    CloudType& owner,
+    const word& type
 )
 :
-    DirectCoulomb<CloudType>(dict, owner, typeName),
+    DirectCoulomb<CloudType>(dict, owner, type),
     rCut_
     (
         this->coeffDict().found("rCut")
@@ -29,7 +30,18 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
             << (this->coeffDict().found("rCut") ? "out of range" : "missing")
             << ": it must be given, finite and > 0" << exit(FatalIOError);
     }
+}
 
+
+template<class CloudType>
+Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    CutoffCoulomb<CloudType>(dict, owner, typeName)
+{
     Info<< "    Pairwise Coulomb sum within rCut = " << rCut_
         << " m (cell list), medium epsilonR = "
         << this->coulomb_.epsilonR() << endl;

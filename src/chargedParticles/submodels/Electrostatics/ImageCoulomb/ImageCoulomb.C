@@ -1,0 +1,291 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "ImageCoulomb.H"
+#include "wallPolyPatch.H"
+#include "wordRes.H"
+#include "unitConversion.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
+(
+    const dictionary& coeffs,
+    const polyMesh& mesh
+)
+{
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+
+    const scalar featureAngle =
+        coeffs.lookupOrDefault<scalar>("featureAngle", 30);
+    if (!(featureAngle > 0 && featureAngle < 90))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry featureAngle [deg] in " << coeffs.name().c_str()
+            << " is " << featureAngle << ": it must be in (0, 90)"
+            << exit(FatalIOError);
+    }
+    const scalar tol = coeffs.lookupOrDefault<scalar>("planeTolerance", 1e-6);
+    if (!(tol > 0 && tol < 1e-2))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry planeTolerance in " << coeffs.name().c_str()
+            << " is " << tol << ": it must be in (0, 1e-2)"
+            << exit(FatalIOError);
+    }
+
+    // The grounded patches: the listed names / regexes (each must match a
+    // non-coupled patch), else every wall patch
+    DynamicList<label> ids;
+    if (coeffs.found("patches"))
+    {
+        const wordRes select(coeffs.get<wordRes>("patches"));
+        if (select.empty())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Entry patches in " << coeffs.name().c_str()
+                << " is empty: list the grounded planar wall patches (or"
+                << " leave it out for all wall patches)"
+                << exit(FatalIOError);
+        }
+        for (const wordRe& w : select)
+        {
+            bool matched = false;
+            forAll(pbm, patchi)
+            {
+                const polyPatch& pp = pbm[patchi];
+                if (!pp.coupled() && w.match(pp.name()))
+                {
+                    matched = true;
+                    if (!ids.found(patchi))
+                    {
+                        ids.append(patchi);
+                    }
+                }
+            }
+            if (!matched)
+            {
+                wordList names;
+                forAll(pbm, patchi)
+                {
+                    if (!pbm[patchi].coupled())
+                    {
+                        names.append(pbm[patchi].name());
+                    }
+                }
+                FatalIOErrorInFunction(coeffs)
+                    << "Entry patches in " << coeffs.name().c_str()
+                    << ": " << w << " matches no (non-coupled) patch."
+                    << " The patches are " << names << exit(FatalIOError);
+            }
+        }
+    }
+    else
+    {
+        forAll(pbm, patchi)
+        {
+            if (isA<wallPolyPatch>(pbm[patchi]))
+            {
+                ids.append(patchi);
+            }
+        }
+        if (ids.empty())
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "No wall patch in the mesh for the image charges of "
+                << coeffs.name().c_str()
+                << ": list the grounded planar patches in entry patches"
+                << exit(FatalIOError);
+        }
+    }
+
+    // Split each patch into planes: faces grouped by unit normal and
+    // offset n.x. Neighbouring faces of different planes at less than
+    // featureAngle mean a curved wall (images need planes)
+    const scalar distTol = tol*mag(mesh.bounds().span());
+    const scalar cosFeature = Foam::cos(degToRad(featureAngle));
+    DynamicList<vector> normals;
+    DynamicList<point> points;
+    auto findPlane = [&](const vector& n, const point& x, const label start)
+    {
+        for (label g = start; g < normals.size(); ++g)
+        {
+            if
+            (
+                (n & normals[g]) > 1 - tol
+             && mag((n & x) - (normals[g] & points[g])) < distTol
+            )
+            {
+                return g;
+            }
+        }
+        return label(-1);
+    };
+
+    for (const label patchi : ids)
+    {
+        const polyPatch& pp = pbm[patchi];
+        const vectorField nf(pp.faceAreas()/mag(pp.faceAreas()));
+        const vectorField::subField xf(pp.faceCentres());
+        const label start = normals.size();
+        labelList plane(pp.size(), -1);
+        forAll(pp, facei)
+        {
+            plane[facei] = findPlane(nf[facei], xf[facei], start);
+            if (plane[facei] < 0)
+            {
+                plane[facei] = normals.size();
+                normals.append(nf[facei]);
+                points.append(xf[facei]);
+            }
+        }
+
+        scalar kink = -1;       // cosine of the smallest kink found
+        const labelListList& edgeFaces = pp.edgeFaces();
+        for (label edgei = 0; edgei < pp.nInternalEdges(); ++edgei)
+        {
+            const label f0 = edgeFaces[edgei][0];
+            const label f1 = edgeFaces[edgei][1];
+            if (plane[f0] != plane[f1])
+            {
+                kink = max(kink, nf[f0] & nf[f1]);
+            }
+        }
+        reduce(kink, maxOp<scalar>());
+        if (kink > cosFeature)
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Entry patches in " << coeffs.name().c_str()
+                << ": patch " << pp.name() << " is not planar: neighbouring"
+                << " faces meet at " << radToDeg(Foam::acos(min(kink, 1.0)))
+                << " deg < featureAngle " << featureAngle
+                << " deg (a curved wall). The image charges need planar"
+                << " walls (pieces meeting at sharp edges)"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The planes of all processors, merged in processor order: the same
+    // list everywhere (and the same as in serial up to round-off)
+    List<pointField> allPoints(Pstream::nProcs());
+    List<vectorField> allNormals(Pstream::nProcs());
+    allPoints[Pstream::myProcNo()] = points;
+    allNormals[Pstream::myProcNo()] = normals;
+    Pstream::gatherList(allPoints);
+    Pstream::scatterList(allPoints);
+    Pstream::gatherList(allNormals);
+    Pstream::scatterList(allNormals);
+    normals.clear();
+    points.clear();
+    forAll(allPoints, proci)
+    {
+        forAll(allPoints[proci], g)
+        {
+            if (findPlane(allNormals[proci][g], allPoints[proci][g], 0) < 0)
+            {
+                normals.append(allNormals[proci][g]);
+                points.append(allPoints[proci][g]);
+            }
+        }
+    }
+    if (normals.empty())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "The grounded patches of " << coeffs.name().c_str()
+            << " have no faces" << exit(FatalIOError);
+    }
+
+    return groundedPlanes(points, normals, tol);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::ImageCoulomb<CloudType>::ImageCoulomb
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    CutoffCoulomb<CloudType>(dict, owner, typeName),
+    planes_(wallPlanes(this->coeffDict(), owner.mesh()))
+{
+    Info<< "    Pairwise Coulomb sum and grounded-wall image charges within"
+        << " rCut = " << this->rCut() << " m (cell list), medium epsilonR = "
+        << this->coulomb_.epsilonR() << nl
+        << "    " << planes_.size() << " wall planes (infinite; normal,"
+        << " point):" << nl;
+    forAll(planes_.normals(), i)
+    {
+        Info<< "        " << planes_.normals()[i] << "  "
+            << planes_.points()[i] << nl;
+    }
+    Info<< endl;
+
+    if (!planes_.rightAngled())
+    {
+        WarningInFunction
+            << "The wall planes of " << this->coeffDict().name().c_str()
+            << " are not all perpendicular or parallel: no composed images"
+            << " across the others, the image field is approximate there"
+            << endl;
+    }
+}
+
+
+template<class CloudType>
+Foam::ImageCoulomb<CloudType>::ImageCoulomb
+(
+    const ImageCoulomb<CloudType>& em
+)
+:
+    CutoffCoulomb<CloudType>(em),
+    planes_(em.planes_)
+{}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ImageCoulomb<CloudType>::calculate()
+{
+    List<pointField> allX;
+    List<scalarField> allQ;
+    this->gatherCharges(allX, allQ);
+
+    pointField xS;
+    scalarField qS;
+    label offset = 0;
+    this->combine(allX, allQ, xS, qS, offset);
+
+    // Every processor images all the charges (the same sources as in
+    // serial); real charges and images both truncated at rCut (Rasera
+    // 2022 section 2.4)
+    const pointField& x = allX[Pstream::myProcNo()];
+    const scalarField& q = allQ[Pstream::myProcNo()];
+    vectorField E(x.size(), Zero);
+    planes_.addFieldsWithinCutoff
+    (
+        this->coulomb_, x, xS, qS, this->rCut(), E, offset
+    );
+
+    vectorField f(q*E);
+    if (this->contactCorrection_ != 0)
+    {
+        this->correctContactPairs(allX, allQ, f);
+    }
+
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        p.E() = E[i];
+        p.fE() = f[i];
+        ++i;
+    }
+}
+
+
+// ************************************************************************* //
