@@ -61,8 +61,17 @@ report("radius", err["R03"] < e32 < err["R01"],
 report("shapedVsEq31", 3*e32 < err["centroid"],
        f"h = 1/32, radius = rCut = 0.15 m: shaped {e32:.2e} vs cellCentroid (Rasera Eq. 31) {err['centroid']:.2e}, >= 3x better")
 
-# 5. 2 processors vs serial
+# 4b. solveInterval 3, step 2 (the copies and images follow the
+#     charges between solves) equals a fresh solve (resting charges)
+E = run("interval", x, q, 32, coeffs="radius 0.15; solveInterval 3;", steps=2)
 Es = run("serial", x, q, 32)
+if E is None or Es is None:
+    report("solveInterval", False, "run failed")
+else:
+    d = np.abs(E - Es).max()/np.abs(Es).max()
+    report("solveInterval", d < 1e-9, f"solveInterval 3, step 2 (no solve) vs solveInterval 1: max |dE|/max|E| = {d:.1e}, tol 1e-9")
+
+# 5. 2 processors vs serial
 Ep = run("parallel", x, q, 32, nProcs=2)
 if Es is None or Ep is None:
     report("parallel", False, "run failed")

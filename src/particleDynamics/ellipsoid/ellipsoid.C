@@ -172,6 +172,15 @@ Foam::scalar Foam::ellipsoid::surfaceArea(const vector& semiAxes)
     // + F(phi, k) cos^2 phi), cos phi = c/a, k^2 = a^2 (b^2 - c^2)/(b^2
     // (a^2 - c^2)) (Legendre; DLMF 19.33.2). Elliptic integrals from
     // libstdc++'s TR1 special functions (C++11 has no std:: ones)
+    // Clouds mostly hold one shape and call this per parcel and step
+    // (drag, charging): remember the last answer (per thread)
+    static thread_local vector lastAxes(Zero);
+    static thread_local scalar lastArea(0);
+    if (semiAxes == lastAxes)
+    {
+        return lastArea;
+    }
+
     scalar s[3] = {semiAxes.x(), semiAxes.y(), semiAxes.z()};
     std::sort(s, s + 3);
     const scalar a = s[2], b = s[1], c = s[0];
@@ -184,7 +193,9 @@ Foam::scalar Foam::ellipsoid::surfaceArea(const vector& semiAxes)
     }
     if (a - c <= 1e-12*a)
     {
-        return 4*pi*sqr(a);
+        lastAxes = semiAxes;
+        lastArea = 4*pi*sqr(a);
+        return lastArea;
     }
 
     const scalar cosPhi = c/a;
@@ -196,9 +207,11 @@ Foam::scalar Foam::ellipsoid::surfaceArea(const vector& semiAxes)
     const scalar E = std::tr1::ellint_2(k, phi);
     const scalar F = std::tr1::ellint_1(k, phi);
 
-    return
+    lastAxes = semiAxes;
+    lastArea =
         2*pi*sqr(c)
       + 2*pi*a*b/sinPhi*(E*sqr(sinPhi) + F*sqr(cosPhi));
+    return lastArea;
 }
 
 

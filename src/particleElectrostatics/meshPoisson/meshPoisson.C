@@ -195,7 +195,7 @@ void Foam::meshPoisson::addPeriodicCopies
     scalarField& q,
     labelList& origin,
     const scalar dist
-) const
+)
 {
     const label nReal = x.size();
     origin = identity(nReal);
@@ -243,6 +243,7 @@ void Foam::meshPoisson::addPeriodicCopies
                 gx.append(y);
                 gq.append(q[i]);
                 go.append(i);
+                addTransform(i, tensor::I, shift, 1);
             }
         }
     }
@@ -359,7 +360,7 @@ void Foam::meshPoisson::addWallImages
     pointField& x,
     scalarField& q,
     labelList& origin
-) const
+)
 {
     // The images of each shape in the walls within its radius (method of
     // images for a plane; for two or three perpendicular planes, an edge or
@@ -373,7 +374,8 @@ void Foam::meshPoisson::addWallImages
     }
     const label n0 = x.size();
     const scalar R = radius_;
-    List<DynamicList<label>> near(n0);
+    // The (charge, wall face) pairs in range, grouped by charge
+    DynamicList<labelPair> pairs;
     forPairsWithinCutoff
     (
         SubList<point>(x, n0), wallC_, R + wallRMax_, -1,
@@ -383,21 +385,43 @@ void Foam::meshPoisson::addWallImages
             const scalar d = -(r & wallN_[f]);
             if (d > 0 && d < R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
             {
-                near[t].append(f);
+                pairs.append(labelPair(t, f));
             }
         }
     );
+    if (pairs.empty())
+    {
+        return;
+    }
+    // forPairsWithinCutoff visits the targets in order
+    labelList start(n0 + 1, 0);
+    for (const labelPair& tf : pairs)
+    {
+        ++start[tf.first() + 1];
+    }
+    for (label i = 0; i < n0; ++i)
+    {
+        start[i + 1] += start[i];
+    }
 
     DynamicList<point> gx(x);
     DynamicList<scalar> gq(q);
     DynamicList<label> go(origin);
+    DynamicList<vector> pn;
+    DynamicList<scalar> pd, ps;
     for (label i = 0; i < n0; ++i)
     {
-        // Distinct planes (normal, distance, sign), nearest first, <= 3
-        DynamicList<vector> pn;
-        DynamicList<scalar> pd, ps;
-        for (const label f : near[i])
+        if (start[i + 1] == start[i])
         {
+            continue;
+        }
+        // Distinct planes (normal, distance, sign), nearest first, <= 3
+        pn.clear();
+        pd.clear();
+        ps.clear();
+        for (label j = start[i]; j < start[i + 1]; ++j)
+        {
+            const label f = pairs[j].second();
             const scalar d = (wallC_[f] - x[i]) & wallN_[f];
             bool known = false;
             forAll(pn, k)
@@ -432,7 +456,9 @@ void Foam::meshPoisson::addWallImages
         // only of mutually perpendicular planes (exact there)
         for (label mask = 1; mask < (1 << np); ++mask)
         {
-            point y(x[i]);
+            // y = T x + b from the reflections y -> (I - 2 n n) y + 2 (p.n) n
+            tensor T(tensor::I);
+            vector b(Zero);
             scalar sgn = 1;
             bool ok = true;
             for (label a = 0; a < np && ok; ++a)
@@ -453,16 +479,19 @@ void Foam::meshPoisson::addWallImages
                     }
                 }
                 const label k = order[a];
-                // Plane through x + d n: y -> y - 2 ((y - p) . n) n
+                // The plane through p = x + d n
                 const point p(x[i] + pd[k]*pn[k]);
-                y -= 2*((y - p) & pn[k])*pn[k];
+                const tensor H(tensor::I - 2*sqr(pn[k]));
+                T = H & T;
+                b = (H & b) + 2*(p & pn[k])*pn[k];
                 sgn *= ps[k];
             }
             if (ok)
             {
-                gx.append(y);
+                gx.append((T & x[i]) + b);
                 gq.append(sgn*q[i]);
                 go.append(origin[i]);
+                addTransform(i, T, b, sgn);
             }
         }
     }
@@ -485,8 +514,12 @@ void Foam::meshPoisson::depositShaped
 
     // Weights: the S2 density (R - r) times the cell volume, normalised
     // over all cells of all processors (conservative deposition)
+    // One search per charge: the cells within R and their weights (R - r)
     DynamicList<label> near;
     DynamicList<scalar> dist;
+    DynamicList<label> cellBuf;
+    DynamicList<scalar> weightBuf;
+    labelList start(x.size() + 1, 0);
     scalarField wSum(nReal, Zero);
     forAll(x, i)
     {
@@ -494,8 +527,11 @@ void Foam::meshPoisson::depositShaped
         scalar& w = wSum[origin[i]];
         forAll(near, j)
         {
+            cellBuf.append(near[j]);
+            weightBuf.append(R - dist[j]);
             w += (R - dist[j])*V[near[j]];
         }
+        start[i + 1] = cellBuf.size();
     }
     Pstream::listCombineGather(wSum, plusEqOp<scalar>());
     Pstream::listCombineScatter(wSum);
@@ -517,10 +553,9 @@ void Foam::meshPoisson::depositShaped
     forAll(x, i)
     {
         const scalar qw = q[i]/wSum[origin[i]];
-        cellsNear(x[i], R, near, dist);
-        forAll(near, j)
+        for (label j = start[i]; j < start[i + 1]; ++j)
         {
-            rho[near[j]] += qw*(R - dist[j]);
+            rho[cellBuf[j]] += qw*weightBuf[j];
         }
     }
 }
@@ -595,6 +630,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         -fvc::grad(Phi_)
     ),
     wallRMax_(0),
+    nRealSources_(-1),
     binOrigin_(Zero),
     binSize_(1),
     nBins_(1, 1, 1)
@@ -687,34 +723,93 @@ void Foam::meshPoisson::solve()
 }
 
 
-void Foam::meshPoisson::fields
+void Foam::meshPoisson::addTransform
+(
+    const label src,
+    const tensor& T,
+    const vector& b,
+    const scalar sign
+)
+{
+    srcOf_.append(src);
+    srcT_.append(T);
+    srcB_.append(b);
+    srcSign_.append(sign);
+}
+
+
+bool Foam::meshPoisson::reapplyTransforms
+(
+    const UList<point>& x,
+    const UList<scalar>& q
+)
+{
+    if (x.size() != nRealSources_ || !EInterp_.valid())
+    {
+        return false;
+    }
+    const label nReal = x.size();
+    xs_.setSize(nReal + srcOf_.size());
+    qs_.setSize(xs_.size());
+    SubList<point>(xs_, nReal) = x;
+    SubList<scalar>(qs_, nReal) = q;
+    forAll(srcOf_, j)
+    {
+        const label s = srcOf_[j];
+        const label i = nReal + j;
+        xs_[i] = (srcT_[j] & xs_[s]) + srcB_[j];
+        qs_[i] = srcSign_[j]*qs_[s];
+        // An image lies within 2 R of its charge (a charge that left and
+        // a new one in its slot would not): else search again
+        if
+        (
+            srcT_[j] != tensor::I
+         && magSqr(xs_[i] - xs_[s]) > sqr(2*radius_)
+        )
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+void Foam::meshPoisson::update
 (
     const UList<point>& x,
     const UList<scalar>& q,
     const label myStart,
-    const labelUList& cells,
-    const UList<point>& cellCentres,
-    UList<vector>& E
+    const labelUList& cells
 )
 {
     const label nReal = x.size();
-    const label nLocal = cells.size();
+    const bool solveNow =
+        nEvaluations_++ % solveInterval_ == 0 || !EInterp_.valid();
 
-    // Sources with their periodic copies
-    pointField xs(x);
-    scalarField qs(q);
-    labelList origin;
-    addPeriodicCopies(xs, qs, origin, 1.5*radius_);
-    if (correction_ == correctionType::shaped)
+    // Sources: the charges, their periodic copies and wall images. Found
+    // when solving; in between, the same copies and images of the moved
+    // charges (unless the charges changed)
+    if (solveNow || !reapplyTransforms(x, q))
     {
-        addWallImages(xs, qs, origin);
+        xs_ = x;
+        qs_ = q;
+        srcOf_.clear();
+        srcT_.clear();
+        srcB_.clear();
+        srcSign_.clear();
+        addPeriodicCopies(xs_, qs_, origin_, 1.5*radius_);
+        if (correction_ == correctionType::shaped)
+        {
+            addWallImages(xs_, qs_, origin_);
+        }
+        nRealSources_ = nReal;
     }
 
-    if (nEvaluations_++ % solveInterval_ == 0 || !EInterp_.valid())
+    if (solveNow)
     {
         if (correction_ == correctionType::shaped)
         {
-            depositShaped(xs, qs, origin, nReal);
+            depositShaped(xs_, qs_, origin_, nReal);
         }
         else
         {
@@ -730,18 +825,26 @@ void Foam::meshPoisson::fields
         rhoQ_.correctBoundaryConditions();
         solve();
     }
+}
 
-    const SubList<point> xT(x, nLocal, myStart);
-    forAll(xT, i)
-    {
-        E[i] = EInterp_->interpolate(xT[i], cells[i]);
-    }
+
+void Foam::meshPoisson::addNearField
+(
+    const UList<point>& xT,
+    const label myStart,
+    const UList<point>& cellCentres,
+    UList<vector>& E
+) const
+{
+    const pointField& xs = xs_;
+    const scalarField& qs = qs_;
+    const labelList& origin = origin_;
+    const label nReal = cellCentres.size();
 
     // Near field: exact Coulomb minus what the mesh carries
     const scalar k =
         1/(4*constant::mathematical::pi*pairwiseCoulomb::vacuumPermittivity
        *epsilonR_);
-
     if (correction_ == correctionType::shaped)
     {
         forPairsWithinCutoff
@@ -771,7 +874,7 @@ void Foam::meshPoisson::fields
             cs.setSize(xs.size());
             for (label i = nReal; i < xs.size(); ++i)
             {
-                cs[i] = cellCentres[origin[i]] + (xs[i] - x[origin[i]]);
+                cs[i] = cellCentres[origin[i]] + (xs[i] - xs[origin[i]]);
             }
         }
         forPairsWithinCutoff
@@ -795,6 +898,26 @@ void Foam::meshPoisson::fields
             }
         );
     }
+}
+
+
+void Foam::meshPoisson::fields
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const label myStart,
+    const labelUList& cells,
+    const UList<point>& cellCentres,
+    UList<vector>& E
+)
+{
+    update(x, q, myStart, cells);
+    const SubList<point> xT(x, cells.size(), myStart);
+    forAll(xT, i)
+    {
+        E[i] = EInterp_->interpolate(xT[i], cells[i]);
+    }
+    addNearField(xT, myStart, cellCentres, E);
 }
 
 

@@ -749,7 +749,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         owner.mesh(),
         readPositive(this->coeffDict(), "maxInteractionDistance"),
         false,
-        this->coeffDict().template lookupOrDefault<word>("U", "U.carrier")
+        this->coeffDict().template lookupOrDefault<word>("U", owner.U().name())
     ),
     nUnconverged_(0),
     dissipatedEnergy_(0),

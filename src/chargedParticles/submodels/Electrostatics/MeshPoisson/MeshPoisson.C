@@ -68,8 +68,20 @@ void Foam::MeshPoisson<CloudType>::calculate()
         this->combine(allC, allQ, cS, dummy, o);
     }
 
-    vectorField E(n, Zero);
-    solver_->fields(xS, qS, offset, cells, cS, E);
+    // Mesh field at the parcels (their own tet coordinates: no search),
+    // then the near-field correction
+    solver_->update(xS, qS, offset, cells);
+    const interpolation<vector>& EMesh = solver_->interpolator();
+    vectorField E(n);
+    i = 0;
+    for (const auto& p : this->owner())
+    {
+        E[i++] = EMesh.interpolate(p.coordinates(), p.currentTetIndices());
+    }
+    solver_->addNearField
+    (
+        SubList<point>(xS, n, offset), offset, cS, E
+    );
 
     const scalarField& q = allQ[Pstream::myProcNo()];
     vectorField f(q*E);
