@@ -2,7 +2,7 @@
 """Write constant/parcels for the chargedDuct tutorial: N PTFE ellipsoids
 (semi-axes 1 x 0.5 x 0.5 mm) at random, non-overlapping positions (their
 bounding spheres 2.1 mm apart) in the upstream half of the duct, random
-orientations, velocity (3, 0, 0) m/s plus a uniform random +-1 m/s per
+orientations, velocity (2, 0, 0) m/s plus a uniform random +-1 m/s per
 component (as from a feeder), uncharged.
 
     makeParcels.py [N] [seed]
@@ -40,7 +40,7 @@ while len(x) < N:
 
 with open("constant/parcels", "w") as f:
     for p in x:
-        U = np.array([3.0, 0, 0]) + rng.uniform(-1, 1, 3)
+        U = np.array([2.0, 0, 0]) + rng.uniform(-1, 1, 3)
         e = rng.uniform(0, 360, 3)
         f.write("{ position (%.9g %.9g %.9g); U (%.6g %.6g %.6g); "
                 "semiAxes (1e-3 5e-4 5e-4); eulerAngles (%.3f %.3f %.3f); "

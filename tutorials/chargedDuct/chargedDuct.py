@@ -1,0 +1,167 @@
+#!/usr/bin/python3
+"""Post-process the chargedDuct tutorial: charge build-up, particle charge
+distribution and the electric field.
+
+Reads the charge balance of the contact charging (postProcessing/lagrangian/
+cloud/triboCharging/0/chargeBalance.dat), the parcel charges q and fields E
+of every time directory, and the mesh field E (volume field of the mesh far
+field) of the last time. Writes chargeBuildUp.png, chargeDistribution.png,
+field.png and prints a summary (results.txt via Allrun).
+
+The saturation charge of a particle is q_sat = eps0 Gamma S (Rasera 2022
+Eq. 17 with the surface S of the ellipsoid in place of 4 pi r^2).
+
+    chargedDuct.py [caseDir] [otherCaseDir]   (the second: compare runs)
+"""
+import os
+import re
+import sys
+
+import numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "..", "etc", "python"))
+from foamLagrangian import read_field  # noqa: E402
+
+EPS0 = 8.8541878128e-12
+GAMMA = -1.52e6                 # PTFE on steel [V/m] (constant/cloudProperties)
+AXES = (1e-3, 5e-4, 5e-4)       # semi-axes [m] (makeParcels.py)
+NX, NY, NZ = 240, 8, 8          # system/blockMeshDict
+L, W = 0.6, 0.02
+
+
+def ellipsoid_area(a, b, c, n=400):
+    """Surface area by midpoint quadrature of the parametric surface."""
+    u = (np.arange(n) + 0.5)*np.pi/n             # polar
+    v = (np.arange(2*n) + 0.5)*np.pi/n           # azimuth
+    U, V = np.meshgrid(u, v, indexing="ij")
+    su, cu, sv, cv = np.sin(U), np.cos(U), np.sin(V), np.cos(V)
+    # |r_u x r_v| for r = (a su cv, b su sv, c cu)
+    nx = b*c*su**2*cv
+    ny = a*c*su**2*sv
+    nz = a*b*su*cu
+    return np.sum(np.sqrt(nx**2 + ny**2 + nz**2))*(np.pi/n)**2
+
+
+Q_SAT = EPS0*abs(GAMMA)*ellipsoid_area(*AXES)
+
+
+def times(case):
+    t = [d for d in os.listdir(case)
+         if re.fullmatch(r"[0-9.eE+-]+", d) and float(d) > 0
+         and os.path.isdir(os.path.join(case, d, "lagrangian", "cloud"))]
+    return sorted(t, key=float)
+
+
+def parcel_q(case, t):
+    return read_field(os.path.join(case, t, "lagrangian", "cloud", "q"))
+
+
+def read_vol_vector(path):
+    s = open(path).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*(\d+)\s*\(", s)
+    if not m:
+        raise RuntimeError(f"{path}: no nonuniform internalField")
+    n = int(m.group(1))
+    body = s[m.end():]
+    nums = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
+    E = np.array([[float(v) for v in e.split()] for e in nums[:n]])
+    return E
+
+
+def balance(case):
+    p = os.path.join(case, "postProcessing", "lagrangian", "cloud",
+                     "triboCharging", "0", "chargeBalance.dat")
+    return np.loadtxt(p, comments="#")
+
+
+def summary(case):
+    ts = times(case)
+    q = [parcel_q(case, t) for t in ts]
+    b = balance(case)
+    last = q[-1]
+    return ts, q, b, {
+        "time": float(ts[-1]),
+        "parcels": len(last),
+        "total": last.sum(),
+        "mean": last.mean()/Q_SAT,
+        "std": last.std()/Q_SAT,
+        "balance": np.abs(b[:, 3]).max()/max(np.abs(b[:, 1]).max(), 1e-300),
+        "wallContacts": b[:, 5].sum(),
+    }
+
+
+def main():
+    case = sys.argv[1] if len(sys.argv) > 1 else "."
+    other = sys.argv[2] if len(sys.argv) > 2 else None
+    ts, q, b, s = summary(case)
+
+    print(f"chargedDuct: {s['parcels']} parcels at t = {s['time']:g} s "
+          f"(2000 injected)")
+    print(f"  q_sat = eps0 |Gamma| S = {Q_SAT:.4g} C per particle")
+    print(f"  total parcel charge {s['total']:.4g} C; mean q/q_sat = "
+          f"{s['mean']:.4f}, std {s['std']:.4f}")
+    print(f"  charge balance (parcels + walls) / max |parcel charge| <= "
+          f"{s['balance']:.1e}; charging wall contacts {s['wallContacts']:.0f}")
+
+    # Charge build-up
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.plot(b[:, 0], -b[:, 1]/(2000*Q_SAT), label="-(parcel charge)/(N q_sat)")
+    ax.plot(b[:, 0], b[:, 2]/(2000*Q_SAT), "--", label="wall charge/(N q_sat)")
+    tq = [float(t) for t in ts]
+    ax.plot(tq, [-x.mean()/Q_SAT for x in q], "o", label="-mean q/q_sat")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("charge / saturation")
+    ax.set_title("PTFE ellipsoids charging on steel walls")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, "chargeBuildUp.png"), dpi=120)
+
+    # Charge distribution at a few times (and of the other run)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    bins = np.linspace(min(x.min() for x in q)/Q_SAT, 0, 41)
+    for i in sorted({len(ts)//3, 2*len(ts)//3, len(ts) - 1}):
+        ax.hist(q[i]/Q_SAT, bins=bins, histtype="step",
+                label=f"t = {ts[i]} s")
+    if other:
+        _, qo, _, so = summary(other)
+        ax.hist(qo[-1]/Q_SAT, bins=bins, histtype="step", ls="--",
+                label=f"t = {so['time']:g} s, {other}")
+        print(f"  {other}: mean q/q_sat = {so['mean']:.4f}, std "
+              f"{so['std']:.4f}, {so['parcels']} parcels")
+        print(f"  difference of the means: {abs(so['mean'] - s['mean']):.4f}"
+              f" (standard error of a mean "
+              f"{np.hypot(s['std'], so['std'])/np.sqrt(s['parcels']):.4f})")
+    ax.set_xlabel("q / q_sat")
+    ax.set_ylabel("parcels")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(case, "chargeDistribution.png"), dpi=120)
+
+    # Mesh field in the mid-plane z = W/2 (the cells next to it)
+    Epath = os.path.join(case, ts[-1], "E")
+    if os.path.exists(Epath):
+        E = read_vol_vector(Epath)
+        magE = np.linalg.norm(E, axis=1).reshape(NZ, NY, NX)
+        mid = 0.5*(magE[NZ//2 - 1] + magE[NZ//2])
+        fig, ax = plt.subplots(figsize=(9, 2.4))
+        im = ax.imshow(mid, origin="lower", extent=(0, L, 0, W),
+                       aspect="auto", cmap="viridis")
+        fig.colorbar(im, ax=ax, label="|E| [V/m]")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+        ax.set_title(f"mesh far field |E|, mid-plane, t = {ts[-1]} s")
+        fig.tight_layout()
+        fig.savefig(os.path.join(case, "field.png"), dpi=120)
+        Ep = read_field(os.path.join(case, ts[-1], "lagrangian", "cloud",
+                                     "E")).reshape(-1, 3)
+        print(f"  field: max |E| on the mesh {np.abs(magE).max():.4g} V/m; "
+              f"at the parcels mean {np.linalg.norm(Ep, axis=1).mean():.4g}"
+              f" V/m (breakdown of air ~3e6 V/m)")
+
+
+if __name__ == "__main__":
+    main()
