@@ -374,18 +374,31 @@ void Foam::meshPoisson::addWallImages
     }
     const label n0 = x.size();
     const scalar R = radius_;
+    // Only charges within R of this processor's cells matter here (their
+    // shapes, images and corrections reach no further)
+    DynamicList<label> here;
+    DynamicList<point> xHere;
+    for (label i = 0; i < n0; ++i)
+    {
+        if (magSqr(localBb_.nearest(x[i]) - x[i]) < sqr(2*R))
+        {
+            here.append(i);
+            xHere.append(x[i]);
+        }
+    }
+
     // The (charge, wall face) pairs in range, grouped by charge
     DynamicList<labelPair> pairs;
     forPairsWithinCutoff
     (
-        SubList<point>(x, n0), wallC_, R + wallRMax_, -1,
+        xHere, wallC_, R + wallRMax_, -1,
         [&](const label t, const label f, const vector& r, const scalar)
         {
             // r = x - c_f; the wall lies at distance d along n_f
             const scalar d = -(r & wallN_[f]);
             if (d > 0 && d < R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
             {
-                pairs.append(labelPair(t, f));
+                pairs.append(labelPair(here[t], f));
             }
         }
     );
@@ -523,6 +536,11 @@ void Foam::meshPoisson::depositShaped
     scalarField wSum(nReal, Zero);
     forAll(x, i)
     {
+        if (magSqr(localBb_.nearest(x[i]) - x[i]) >= sqr(R))
+        {
+            start[i + 1] = cellBuf.size();
+            continue;
+        }
         cellsNear(x[i], R, near, dist);
         scalar& w = wSum[origin[i]];
         forAll(near, j)
@@ -660,6 +678,8 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
 
     findPeriodicShifts();
     binCells();
+    localBb_ = boundBox(mesh.points(), false);
+    localBb_.inflate(1e-6);
 
     if (correction_ == correctionType::shaped)
     {

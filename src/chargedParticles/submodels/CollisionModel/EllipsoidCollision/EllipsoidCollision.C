@@ -408,11 +408,32 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
         return;
     }
 
+    // A referred pair is evaluated on both processors: in one canonical
+    // order (lower origProc, origId first), so that both get the same
+    // geometry to the last bit (the charge transfer then balances exactly)
+    const bool swapped =
+        referred
+     && (
+            pA.origProc() > pB.origProc()
+         || (pA.origProc() == pB.origProc() && pA.origId() > pB.origId())
+        );
+    parcelType& p1 = swapped ? pB : pA;
+    parcelType& p2 = swapped ? pA : pB;
+    const point& x1 = swapped ? xB : xA;
+    const point& x2 = swapped ? xA : xB;
+    const scalar r1 = swapped ? rB : rA;
+    const scalar r2 = swapped ? rA : rB;
+
     // Two spheres: the analytic fast path, without ellipsoid objects
-    const ellipsoidContact::result c =
-        pA.isSphere() && pB.isSphere()
-      ? ellipsoidContact::sphereSphere(xA, rA, xB, rB)
-      : ellipsoidContact::contact(shell(pA, xA), shell(pB, xB), method_);
+    ellipsoidContact::result c =
+        p1.isSphere() && p2.isSphere()
+      ? ellipsoidContact::sphereSphere(x1, r1, x2, r2)
+      : ellipsoidContact::contact(shell(p1, x1), shell(p2, x2), method_);
+    if (swapped)
+    {
+        std::swap(c.x1, c.x2);
+        c.n = -c.n;
+    }
 
     if (!c.contact || c.overlap <= 0)
     {
@@ -749,7 +770,11 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         owner.mesh(),
         readPositive(this->coeffDict(), "maxInteractionDistance"),
         false,
-        this->coeffDict().template lookupOrDefault<word>("U", owner.U().name())
+        this->coeffDict().template lookupOrDefault<word>
+        (
+            "U",
+            owner.U().name()
+        )
     ),
     nUnconverged_(0),
     dissipatedEnergy_(0),
