@@ -54,7 +54,10 @@ class FarFieldCase:
         self.boundary, self.Phi = boundary, Phi
 
     def write(self):
-        p, L, n = self.path, self.L, self.n
+        p = self.path
+        # L, n: scalars (a cube) or 3-vectors (a box)
+        L = np.broadcast_to(np.asarray(self.L, dtype=float), (3,))
+        n = np.broadcast_to(np.asarray(self.n, dtype=int), (3,))
         shutil.rmtree(p, ignore_errors=True)
         if self.boundary:
             patches = self.boundary
@@ -74,9 +77,11 @@ class FarFieldCase:
         faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7));
     }"""
         _write(p + "/system/blockMeshDict", "blockMeshDict", f"""
-scale {L!r};
-vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1));
-blocks (hex (0 1 2 3 4 5 6 7) ({n} {n} {n}) simpleGrading (1 1 1));
+scale 1;
+vertices ((0 0 0) ({L[0]!r} 0 0) ({L[0]!r} {L[1]!r} 0) (0 {L[1]!r} 0)
+    (0 0 {L[2]!r}) ({L[0]!r} 0 {L[2]!r}) ({L[0]!r} {L[1]!r} {L[2]!r})
+    (0 {L[1]!r} {L[2]!r}));
+blocks (hex (0 1 2 3 4 5 6 7) ({n[0]} {n[1]} {n[2]}) simpleGrading (1 1 1));
 boundary
 ({patches}
 );
