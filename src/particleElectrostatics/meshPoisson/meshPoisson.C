@@ -596,7 +596,6 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         )
     ),
     radius_(readRadius()),
-
     interpolationScheme_
     (
         coeffs.lookupOrDefault<word>
