@@ -1,9 +1,9 @@
 # Flagship tutorial chargedDuct, shortened to 20 fluid steps (2 ms): the
 # gas-coupled solver with ellipsoid contact, wall charging and the mesh far
 # field runs in serial and on 2 processors; no parcel lost, no NaN; charge
-# balance of parcels and walls to round-off (pairs across processors are
-# evaluated in one canonical order); the PTFE parcels charge negatively and
-# stay below saturation; serial and parallel agree.
+# balance of parcels and walls to round-off (a pair across processors is
+# charged by one side, which sends the partner's share); the PTFE parcels
+# charge negatively and stay below saturation; serial and parallel agree.
 . "$(dirname "$0")/common.sh.inc"
 
 for mode in serial parallel
@@ -48,8 +48,10 @@ for mode in ("serial", "parallel"):
     report(f"{mode}.balance", bal < 1e-12,
            f"max |parcels + walls| / |parcel charge| = {bal:.1e}, tol 1e-12")
     qq = q[-1]/cd.Q_SAT
-    report(f"{mode}.charging", qq.max() <= 0 and qq.min() > -1 and qq.mean() < 0,
-           f"q/q_sat in [{qq.min():.3e}, {qq.max():.3e}], mean {qq.mean():.3e}: negative, above -1")
+    # Walls make PTFE negative; pair contacts can leave a few particles
+    # slightly positive (field-driven, Gamma = 0 between like particles)
+    report(f"{mode}.charging", qq.mean() < 0 and np.abs(qq).max() < 1,
+           f"q/q_sat in [{qq.min():.3e}, {qq.max():.3e}], mean {qq.mean():.3e}: mean negative, |q| < q_sat")
 if len(res) == 2:
     ms, mp = res["serial"][1]["mean"], res["parallel"][1]["mean"]
     d = abs(ms - mp)/abs(ms)

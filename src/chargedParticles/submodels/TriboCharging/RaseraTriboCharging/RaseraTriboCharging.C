@@ -288,12 +288,37 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     const UList<ParcelContact<parcelType>>& contacts
 )
 {
-    // All transfers from the charges before this collide, then applied
+    // All transfers from the charges before this collide, then applied.
+    // A pair across processors is seen on both: only the side of the
+    // lower (origProc, origId) transfers, and sends the partner's share to
+    // the partner's processor, so the processors balance to the last bit
+    // (the two sides' contact geometries differ at round-off). Both sides
+    // still update their area records
     dq_.setSize(contacts.size());
+    DynamicList<label> sentIds;
+    DynamicList<scalar> sentDq;
     forAll(contacts, k)
     {
         const ParcelContact<parcelType>& c = contacts[k];
         dq_[k] = transferOf(c, c.pB ? pp_() : walls_[c.patchi]);
+        if (c.referred && dq_[k] != 0)
+        {
+            const parcelType& pA = *c.pA;
+            const parcelType& pB = *c.pB;
+            const bool lower =
+                pA.origProc() < pB.origProc()
+             || (pA.origProc() == pB.origProc() && pA.origId() < pB.origId());
+            if (lower)
+            {
+                sentIds.append(pB.origProc());
+                sentIds.append(pB.origId());
+                sentDq.append(dq_[k]);
+            }
+            else
+            {
+                dq_[k] = 0;
+            }
+        }
     }
 
     forAll(contacts, k)
@@ -316,6 +341,44 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
         {
             ++nWallCharging_;
             wallChargeLocal_[c.patchi] -= dq_[k];
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        List<labelList> allIds(Pstream::nProcs());
+        List<scalarList> allDq(Pstream::nProcs());
+        allIds[Pstream::myProcNo()] = sentIds;
+        allDq[Pstream::myProcNo()] = sentDq;
+        Pstream::gatherList(allIds);
+        Pstream::scatterList(allIds);
+        Pstream::gatherList(allDq);
+        Pstream::scatterList(allDq);
+
+        HashTable<scalar, labelPair, Hash<labelPair>> received;
+        forAll(allIds, proci)
+        {
+            forAll(allDq[proci], j)
+            {
+                const labelPair id
+                (
+                    allIds[proci][2*j],
+                    allIds[proci][2*j + 1]
+                );
+                received(id) += allDq[proci][j];
+            }
+        }
+        if (received.size())
+        {
+            for (parcelType& p : this->owner())
+            {
+                const auto iter =
+                    received.cfind(labelPair(p.origProc(), p.origId()));
+                if (iter.found())
+                {
+                    p.q() -= iter.val();
+                }
+            }
         }
     }
 
