@@ -76,23 +76,10 @@ void Foam::CutoffCoulomb<CloudType>::calculate()
     this->combine(allX, allQ, xS, qS, offset);
 
     const pointField& x = allX[Pstream::myProcNo()];
-    const scalarField& q = allQ[Pstream::myProcNo()];
     vectorField E(x.size(), Zero);
     this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, offset);
 
-    vectorField f(q*E);
-    if (this->contactCorrection_ != 0)
-    {
-        this->correctContactPairs(allX, allQ, f);
-    }
-
-    label i = 0;
-    for (auto& p : this->owner())
-    {
-        p.E() = E[i];
-        p.fE() = f[i];
-        ++i;
-    }
+    this->setFields(allX, allQ, E);
 }
 
 

@@ -86,6 +86,32 @@ void Foam::DirectCoulomb<CloudType>::correctContactPairs
 }
 
 
+template<class CloudType>
+void Foam::DirectCoulomb<CloudType>::setFields
+(
+    const List<pointField>& allX,
+    const List<scalarField>& allQ,
+    const vectorField& E
+)
+{
+    // The field is kept (contact charging needs it, also on neutral
+    // parcels); the force is q E
+    vectorField f(allQ[Pstream::myProcNo()]*E);
+    if (contactCorrection_ != 0)
+    {
+        correctContactPairs(allX, allQ, f);
+    }
+
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        p.E() = E[i];
+        p.fE() = f[i];
+        ++i;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -166,20 +192,7 @@ void Foam::DirectCoulomb<CloudType>::calculate()
         }
     }
 
-    vectorField f(q*E);
-
-    if (contactCorrection_ != 0)
-    {
-        correctContactPairs(allX, allQ, f);
-    }
-
-    label i = 0;
-    for (auto& p : this->owner())
-    {
-        p.E() = E[i];
-        p.fE() = f[i];
-        ++i;
-    }
+    setFields(allX, allQ, E);
 }
 
 

@@ -265,26 +265,13 @@ void Foam::ImageCoulomb<CloudType>::calculate()
     // serial); real charges and images both truncated at rCut (Rasera
     // 2022 section 2.4)
     const pointField& x = allX[Pstream::myProcNo()];
-    const scalarField& q = allQ[Pstream::myProcNo()];
     vectorField E(x.size(), Zero);
     planes_.addFieldsWithinCutoff
     (
         this->coulomb_, x, xS, qS, this->rCut(), E, offset
     );
 
-    vectorField f(q*E);
-    if (this->contactCorrection_ != 0)
-    {
-        this->correctContactPairs(allX, allQ, f);
-    }
-
-    label i = 0;
-    for (auto& p : this->owner())
-    {
-        p.E() = E[i];
-        p.fE() = f[i];
-        ++i;
-    }
+    this->setFields(allX, allQ, E);
 }
 
 

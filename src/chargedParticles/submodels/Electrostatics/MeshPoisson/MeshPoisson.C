@@ -83,20 +83,7 @@ void Foam::MeshPoisson<CloudType>::calculate()
         SubList<point>(xS, n, offset), offset, cS, E
     );
 
-    const scalarField& q = allQ[Pstream::myProcNo()];
-    vectorField f(q*E);
-    if (this->contactCorrection_ != 0)
-    {
-        this->correctContactPairs(allX, allQ, f);
-    }
-
-    i = 0;
-    for (auto& p : this->owner())
-    {
-        p.E() = E[i];
-        p.fE() = f[i];
-        ++i;
-    }
+    this->setFields(allX, allQ, E);
 }
 
 
