@@ -122,7 +122,8 @@ def main():
 
     # Charge distribution at a few times (and of the other run)
     fig, ax = plt.subplots(figsize=(6, 4))
-    bins = np.linspace(min(x.min() for x in q)/Q_SAT, 0, 41)
+    bins = np.linspace(min(x.min() for x in q)/Q_SAT,
+                       max(0, max(x.max() for x in q)/Q_SAT), 41)
     for i in sorted({len(ts)//3, 2*len(ts)//3, len(ts) - 1}):
         ax.hist(q[i]/Q_SAT, bins=bins, histtype="step",
                 label=f"t = {ts[i]} s")
