@@ -3,7 +3,8 @@
 # field runs in serial and on 2 processors; no parcel lost, no NaN; charge
 # balance of parcels and walls to round-off (a pair across processors is
 # charged by one side, which sends the partner's share); the PTFE parcels
-# charge negatively and stay below saturation; serial and parallel agree.
+# charge negatively and stay below saturation; serial and parallel agree;
+# charge leaving through the outlet is booked in the balance.
 . "$(dirname "$0")/common.sh.inc"
 
 for mode in serial parallel
@@ -24,6 +25,29 @@ do
     check "chargedDuct.$mode.noNaN" "(no nan in the solver log)" \
         bash -c "! grep -qi 'nan' log.chargedDPMFoam"
 done
+
+# Outflow: 60 charged parcels start just before the outlet at 5 m/s; the
+# charge they carry out is booked (balance = parcels + walls + outflow)
+copyCase chargedDuct "$work/outflow"
+cd "$work/outflow" || exit 1
+$PY - <<'PYEOF'
+import numpy as np
+rng = np.random.default_rng(3)
+x = []
+while len(x) < 60:      # bounding spheres (1 mm) apart: no initial overlap
+    p = np.array([0.575 + 0.023*rng.random(), 0.0012 + 0.0176*rng.random(), 0.0012 + 0.0176*rng.random()])
+    if all(np.sum((p - y)**2) > 2.1e-3**2 for y in x):
+        x.append(p)
+with open("constant/parcels", "w") as f:
+    for p in x:
+        f.write("{ position (%.9g %.9g %.9g); U (5 0 0); semiAxes (1e-3 5e-4 5e-4); q -1e-12; }\n" % tuple(p))
+PYEOF
+sed -i 's/balanceInterval 50;/balanceInterval 5;/' constant/cloudProperties
+foamDictionary -entry endTime -set 0.004 system/controlDict > /dev/null
+foamDictionary -entry writeInterval -set 10 system/controlDict > /dev/null
+run blockMesh blockMesh
+run chargedDPMFoam chargedDPMFoam
+check "chargedDuct.outflow.run" "(chargedDPMFoam ended)" grep -q "^End" log.chargedDPMFoam
 
 $PY - "$work" "$top" <<'PYEOF'
 import os, sys
@@ -52,6 +76,15 @@ for mode in ("serial", "parallel"):
     # slightly positive (field-driven, Gamma = 0 between like particles)
     report(f"{mode}.charging", qq.mean() < 0 and np.abs(qq).max() < 1,
            f"q/q_sat in [{qq.min():.3e}, {qq.max():.3e}], mean {qq.mean():.3e}: mean negative, |q| < q_sat")
+b = np.loadtxt(f"{work}/outflow/postProcessing/lagrangian/cloud/triboCharging/0/chargeBalance.dat")
+q0 = -60e-12
+drift = np.abs(b[:, 3] - q0).max()/abs(q0)
+out = b[-1, 6]
+ts = cd.times(f"{work}/outflow")
+n = len(cd.parcel_q(f"{work}/outflow", ts[-1])) if ts else 60
+report("outflow", n < 60 and out < 0 and drift < 1e-12,
+       f"{60 - n} of 60 parcels left through the outlet carrying {out:.4e} C; parcels + walls + outflow = initial charge to {drift:.1e}, tol 1e-12")
+
 if len(res) == 2:
     ms, mp = res["serial"][1]["mean"], res["parallel"][1]["mean"]
     d = abs(ms - mp)/abs(ms)

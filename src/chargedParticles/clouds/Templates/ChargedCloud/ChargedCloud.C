@@ -95,8 +95,17 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     constProps_(this->particleProperties()),
     electrostaticsModel_(nullptr),
     triboChargingModel_(nullptr),
-    forcesStale_(true)
+    forcesStale_(true),
+    escapedCharge0_(this->mesh().boundaryMesh().size(), Zero),
+    escapedChargeLocal_(this->mesh().boundaryMesh().size(), Zero)
 {
+    // Charge that left in an earlier run (restart)
+    this->outputProperties().readIfPresent("escapedCharge", escapedCharge0_);
+    if (escapedCharge0_.size() != escapedChargeLocal_.size())
+    {
+        escapedCharge0_.setSize(escapedChargeLocal_.size(), Zero);
+    }
+
     if (this->solution().active())
     {
         checkConstProps();
@@ -215,10 +224,21 @@ void Foam::ChargedCloud<CloudType>::evolve()
 
 
 template<class CloudType>
+Foam::scalarField Foam::ChargedCloud<CloudType>::escapedCharge() const
+{
+    scalarField q(escapedChargeLocal_);
+    Pstream::listCombineGather(q, plusEqOp<scalar>());
+    Pstream::listCombineScatter(q);
+    return escapedCharge0_ + q;
+}
+
+
+template<class CloudType>
 void Foam::ChargedCloud<CloudType>::postEvolve()
 {
     // Before the base writes the cloud's output properties (the wall
-    // charges are kept there for a restart)
+    // and escaped charges are kept there for a restart)
+    this->outputProperties().set("escapedCharge", escapedCharge());
     if (triboCharging().active())
     {
         triboCharging().writeBalance();
@@ -286,6 +306,18 @@ void Foam::ChargedCloud<CloudType>::info()
     CloudType::info();
 
     Info<< "    Total charge                    = " << totalCharge() << nl;
+    {
+        const scalarField qOut(escapedCharge());
+        const polyBoundaryMesh& patches = this->mesh().boundaryMesh();
+        forAll(qOut, patchi)
+        {
+            if (qOut[patchi] != 0)
+            {
+                Info<< "    Charge escaped through " << patches[patchi].name()
+                    << " = " << qOut[patchi] << nl;
+            }
+        }
+    }
 
     if (triboCharging().active())
     {

@@ -51,7 +51,16 @@ bool Foam::ChargedParcel<ParcelType>::move
         this->U() += (0.5*trackTime/this->mass())*fE_;
     }
 
-    return ParcelType::move(cloud, td, trackTime);
+    const bool keep = ParcelType::move(cloud, td, trackTime);
+
+    // A parcel removed on a boundary face (escaped through an open patch)
+    // takes its charge out of the domain: book it for the charge balance
+    if (!td.keepParticle && this->onBoundaryFace())
+    {
+        cloud.addEscapedCharge(this->patch(), q_);
+    }
+
+    return keep;
 }
 
 

@@ -411,6 +411,7 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
 
     const scalarField qWalls(wallCharge());
     const scalar qParcels = this->owner().totalCharge();
+    const scalar qOut = sum(this->owner().escapedCharge());
     const label nPair = returnReduce(nPairCharging_, sumOp<label>());
     const label nWall = returnReduce(nWallCharging_, sumOp<label>());
     nPairCharging_ = 0;
@@ -439,8 +440,9 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
         OFstream& os = filePtr_();
         os.precision(17);
         os  << "# Contact charging of cloud " << this->owner().name()
-            << " [C]: charge received by each wall patch since the start"
-            << nl << "# time parcels";
+            << " [C]: charge received by each wall patch since the start;"
+            << " balance = parcels + walls + outflow (charge carried out by"
+            << " escaping parcels)" << nl << "# time parcels";
         forAll(walls_, patchi)
         {
             if (walls_.set(patchi))
@@ -448,11 +450,12 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
                 os  << ' ' << patches[patchi].name();
             }
         }
-        os  << " balance nPairContactsCharging nWallContactsCharging" << nl;
+        os  << " balance nPairContactsCharging nWallContactsCharging outflow"
+            << nl;
     }
 
     OFstream& os = filePtr_();
-    scalar balance = qParcels;
+    scalar balance = qParcels + qOut;
     os  << time.value() << ' ' << qParcels;
     forAll(walls_, patchi)
     {
@@ -462,7 +465,8 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
             balance += qWalls[patchi];
         }
     }
-    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << endl;
+    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << ' ' << qOut
+        << endl;
 }
 
 
