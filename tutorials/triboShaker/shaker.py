@@ -35,7 +35,8 @@ def main():
         f = os.path.join(run, "postProcessing", "lagrangian", "cloud",
                          "triboCharging", "0", "chargeBalance.dat")
         x = np.loadtxt(f)
-        t, q, bal = x[:, 0], x[:, 1], x[:, -3]
+        header = [l for l in open(f) if l.startswith("# time")][0].split()[1:]
+        t, q, bal = x[:, 0], x[:, 1], x[:, header.index("balance")]
         name = os.path.basename(run)
         drift = np.abs(bal - bal[0]).max()/max(np.abs(q).max(), 1e-300)
         print("%s: triboShaker.%s.balance (particles + walls drift %.1e of the charge)"
