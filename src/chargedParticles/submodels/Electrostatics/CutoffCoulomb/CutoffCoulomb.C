@@ -64,16 +64,14 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
 template<class CloudType>
 void Foam::CutoffCoulomb<CloudType>::calculate()
 {
+    // All charges as the sources, and per processor (the contact
+    // correction wants those)
     List<pointField> allX;
     List<scalarField> allQ;
-    this->gatherCharges(allX, allQ);
-
-    // All charges in one list as the sources (the contact correction
-    // below wants the per-processor lists too)
     pointField xS;
     scalarField qS;
     label offset = 0;
-    this->combine(allX, allQ, xS, qS, offset);
+    this->gatherCharges(allX, allQ, xS, qS, offset);
 
     const pointField& x = allX[Pstream::myProcNo()];
     vectorField E(x.size(), Zero);

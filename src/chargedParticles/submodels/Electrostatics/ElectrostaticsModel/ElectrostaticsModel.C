@@ -86,6 +86,20 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
 {
     List<pointField> allX;
     List<scalarField> allQ;
+    gatherCharges(allX, allQ, x, q, myStart);
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::gatherCharges
+(
+    List<pointField>& allX,
+    List<scalarField>& allQ,
+    pointField& x,
+    scalarField& q,
+    label& myStart
+) const
+{
     gatherCharges(allX, allQ);
     combine(allX, allQ, x, q, myStart);
 }

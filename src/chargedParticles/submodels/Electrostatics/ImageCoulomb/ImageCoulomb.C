@@ -252,14 +252,14 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
 template<class CloudType>
 void Foam::ImageCoulomb<CloudType>::calculate()
 {
+    // All charges as the sources, and per processor (the contact
+    // correction wants those)
     List<pointField> allX;
     List<scalarField> allQ;
-    this->gatherCharges(allX, allQ);
-
     pointField xS;
     scalarField qS;
     label offset = 0;
-    this->combine(allX, allQ, xS, qS, offset);
+    this->gatherCharges(allX, allQ, xS, qS, offset);
 
     // Every processor images all the charges (the same sources as in
     // serial); real charges and images both truncated at rCut (Rasera

@@ -34,14 +34,14 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
 template<class CloudType>
 void Foam::MeshPoisson<CloudType>::calculate()
 {
+    // All charges as the sources, and per processor (the contact
+    // correction wants those)
     List<pointField> allX;
     List<scalarField> allQ;
-    this->gatherCharges(allX, allQ);
-
     pointField xS;
     scalarField qS;
     label offset = 0;
-    this->combine(allX, allQ, xS, qS, offset);
+    this->gatherCharges(allX, allQ, xS, qS, offset);
 
     // The cells of the local parcels, and the centres of all parcels'
     // cells (the cellCentroid correction, Rasera Eq. 31, compares them)
