@@ -71,7 +71,7 @@ for mode in ("serial", "parallel"):
     bal = np.abs(b[:, 3]).max()/np.abs(b[:, 1]).max()
     report(f"{mode}.balance", bal < 1e-12,
            f"max |parcels + walls| / |parcel charge| = {bal:.1e}, tol 1e-12")
-    qq = q[-1]/cd.Q_SAT
+    qq = q[-1]/s["qSat"]
     # Walls make PTFE negative; pair contacts can leave a few particles
     # slightly positive (field-driven, Gamma = 0 between like particles)
     report(f"{mode}.charging", qq.mean() < 0 and np.abs(qq).max() < 1,

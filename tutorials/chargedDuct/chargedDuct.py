@@ -27,10 +27,6 @@ sys.path.insert(0, os.path.join(here, "..", "..", "etc", "python"))
 from foamLagrangian import read_field  # noqa: E402
 
 EPS0 = 8.8541878128e-12
-GAMMA = -1.52e6                 # PTFE on steel [V/m] (constant/cloudProperties)
-AXES = (1e-3, 5e-4, 5e-4)       # semi-axes [m] (makeParcels.py)
-NX, NY, NZ = 240, 8, 8          # system/blockMeshDict
-L, W = 0.6, 0.02
 
 
 def ellipsoid_area(a, b, c, n=400):
@@ -46,7 +42,24 @@ def ellipsoid_area(a, b, c, n=400):
     return np.sum(np.sqrt(nx**2 + ny**2 + nz**2))*(np.pi/n)**2
 
 
-Q_SAT = EPS0*abs(GAMMA)*ellipsoid_area(*AXES)
+def case_params(case):
+    """Gamma (constant/cloudProperties), the parcels' semi-axes (constant/
+    parcels), the cells and size of the duct (system/blockMeshDict), and
+    q_sat = eps0 |Gamma| S."""
+    cloud = open(os.path.join(case, "constant", "cloudProperties")).read()
+    gamma = float(re.search(r"Gamma\s+([-0-9.eE+]+)\s*;", cloud).group(1))
+    parcels = open(os.path.join(case, "constant", "parcels")).read()
+    axes = [float(v) for v in
+            re.search(r"semiAxes\s*\(([^)]*)\)", parcels).group(1).split()]
+    mesh = open(os.path.join(case, "system", "blockMeshDict")).read()
+    cells = [int(v) for v in
+             re.search(r"hex\s*\([^)]*\)\s*\(([^)]*)\)", mesh).group(1).split()]
+    verts = re.search(r"vertices\s*\((.*?)\);", mesh, re.S).group(1)
+    pts = np.array([[float(v) for v in t.split()]
+                    for t in re.findall(r"\(([^()]*)\)", verts)])
+    return {"Gamma": gamma, "axes": axes, "cells": cells,
+            "size": pts.max(axis=0) - pts.min(axis=0),
+            "qSat": EPS0*abs(gamma)*ellipsoid_area(*axes)}
 
 
 def times(case):
@@ -83,12 +96,14 @@ def summary(case):
     q = [parcel_q(case, t) for t in ts]
     b = balance(case)
     last = q[-1]
+    qSat = case_params(case)["qSat"]
     return ts, q, b, {
+        "qSat": qSat,
         "time": float(ts[-1]),
         "parcels": len(last),
         "total": last.sum(),
-        "mean": last.mean()/Q_SAT,
-        "std": last.std()/Q_SAT,
+        "mean": last.mean()/qSat,
+        "std": last.std()/qSat,
         "balance": np.abs(b[:, 3]).max()/max(np.abs(b[:, 1]).max(), 1e-300),
         "wallContacts": b[:, 5].sum(),
     }
@@ -98,9 +113,14 @@ def main():
     case = sys.argv[1] if len(sys.argv) > 1 else "."
     other = sys.argv[2] if len(sys.argv) > 2 else None
     ts, q, b, s = summary(case)
+    par = case_params(case)
+    Q_SAT = s["qSat"]
+    N = s["parcels"]
+    NX, NY, NZ = par["cells"]
+    L, W = par["size"][0], par["size"][1]
 
     print(f"chargedDuct: {s['parcels']} parcels at t = {s['time']:g} s "
-          f"(2000 injected)")
+          f"({len(q[0])} at the first write)")
     print(f"  q_sat = eps0 |Gamma| S = {Q_SAT:.4g} C per particle")
     print(f"  total parcel charge {s['total']:.4g} C; mean q/q_sat = "
           f"{s['mean']:.4f}, std {s['std']:.4f}")
@@ -109,8 +129,8 @@ def main():
 
     # Charge build-up
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(b[:, 0], -b[:, 1]/(2000*Q_SAT), label="-(parcel charge)/(N q_sat)")
-    ax.plot(b[:, 0], b[:, 2]/(2000*Q_SAT), "--", label="wall charge/(N q_sat)")
+    ax.plot(b[:, 0], -b[:, 1]/(N*Q_SAT), label="-(parcel charge)/(N q_sat)")
+    ax.plot(b[:, 0], b[:, 2]/(N*Q_SAT), "--", label="wall charge/(N q_sat)")
     tq = [float(t) for t in ts]
     ax.plot(tq, [-x.mean()/Q_SAT for x in q], "o", label="-mean q/q_sat")
     ax.set_xlabel("t [s]")

@@ -861,9 +861,12 @@ void Foam::meshPoisson::addNearField
     const label nReal = cellCentres.size();
 
     // Near field: exact Coulomb minus what the mesh carries
-    const scalar k =
-        1/(4*constant::mathematical::pi*pairwiseCoulomb::vacuumPermittivity
-       *epsilonR_);
+    const scalar k = pairwiseCoulomb(epsilonR_).k();
+    const auto coincident = [&](const label t)
+    {
+        FatalErrorInFunction
+            << "Two charges at one point " << xT[t] << exit(FatalError);
+    };
     if (correction_ == correctionType::shaped)
     {
         forPairsWithinCutoff
@@ -873,9 +876,7 @@ void Foam::meshPoisson::addNearField
             {
                 if (r2 == 0)
                 {
-                    FatalErrorInFunction
-                        << "Two charges at one point " << xT[t]
-                        << exit(FatalError);
+                    coincident(t);
                 }
                 const scalar rm = std::sqrt(r2);
                 E[t] +=
@@ -903,9 +904,7 @@ void Foam::meshPoisson::addNearField
             {
                 if (r2 == 0)
                 {
-                    FatalErrorInFunction
-                        << "Two charges at one point " << xT[t]
-                        << exit(FatalError);
+                    coincident(t);
                 }
                 E[t] += (k*qs[s]/(r2*std::sqrt(r2)))*r;
                 const vector rc(cellCentres[myStart + t] - cs[s]);
@@ -917,26 +916,6 @@ void Foam::meshPoisson::addNearField
             }
         );
     }
-}
-
-
-void Foam::meshPoisson::fields
-(
-    const UList<point>& x,
-    const UList<scalar>& q,
-    const label myStart,
-    const labelUList& cells,
-    const UList<point>& cellCentres,
-    UList<vector>& E
-)
-{
-    update(x, q, myStart, cells);
-    const SubList<point> xT(x, cells.size(), myStart);
-    forAll(xT, i)
-    {
-        E[i] = EInterp_->interpolate(xT[i], cells[i]);
-    }
-    addNearField(xT, myStart, cellCentres, E);
 }
 
 

@@ -409,8 +409,9 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     }
 
     // A referred pair is evaluated on both processors: in one canonical
-    // order (lower origProc, origId first), so that both get the same
-    // geometry to the last bit (the charge transfer then balances exactly)
+    // order (lower origProc, origId first), so both solve the same contact
+    // problem (the referred copy's position may still differ at round-off;
+    // tribocharging balances by charging such a pair on one side only)
     const bool swapped =
         referred
      && (

@@ -43,23 +43,28 @@ void Foam::MeshPoisson<CloudType>::calculate()
     label offset = 0;
     this->gatherCharges(allX, allQ, xS, qS, offset);
 
-    // The cells of the local parcels, and the centres of all parcels'
-    // cells (the cellCentroid correction, Rasera Eq. 31, compares them)
+    // The cells of the local parcels, and for the cellCentroid correction
+    // (Rasera Eq. 31 compares them) the centres of all parcels' cells
     const label n = this->owner().size();
+    const bool centroids =
+        solver_->correction() == meshPoisson::correctionType::cellCentroid;
     labelList cells(n);
     List<pointField> allC(Pstream::nProcs());
     pointField& c = allC[Pstream::myProcNo()];
-    c.setSize(n);
+    c.setSize(centroids ? n : 0);
     const volVectorField& C = this->owner().mesh().C();
     label i = 0;
     for (const auto& p : this->owner())
     {
         cells[i] = p.cell();
-        c[i] = C[p.cell()];
+        if (centroids)
+        {
+            c[i] = C[p.cell()];
+        }
         ++i;
     }
     pointField cS;
-    if (solver_->correction() == meshPoisson::correctionType::cellCentroid)
+    if (centroids)
     {
         Pstream::gatherList(allC);
         Pstream::scatterList(allC);
