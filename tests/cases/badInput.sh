@@ -2,7 +2,8 @@
 # missing or out-of-range charge, diameter, density, rho0, epsilonR;
 # contact charging: negative kappaC, a wall patch without parameters, a
 # missing Gamma, a non-positive cutoff distance, charging without
-# ellipsoidCollision.
+# ellipsoidCollision; lazy-tracking tolerance, log interval and neighbour
+# skin out of range.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -82,3 +83,10 @@ badCase missingParticles 'particles \{ kappaC 0; \}' '' \
 badCase zeroCutoffDistance 'triboChargingModel +GammaKappa;\s*GammaKappaCoeffs' \
     'triboChargingModel workFunction; workFunctionCoeffs' \
     'Entry cutoffDistance is missing'
+badCase negativeTrackingTolerance 'maxCo +0.3;' 'maxCo 0.3; trackingTolerance -1e-3;' \
+    'Entry trackingTolerance = -0.001 is out of range \[0, 0.5\]'
+badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
+    'Entry logInterval = 0 is out of range: >= 1'
+badCase zeroNeighbourSkin 'maxInteractionDistance +4e-3;' \
+    'maxInteractionDistance 4e-3; neighbourSkin 0;' \
+    'Entry neighbourSkin = 0 is out of range: it must be finite and > 0'

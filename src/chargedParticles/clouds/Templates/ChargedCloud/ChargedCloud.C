@@ -303,6 +303,11 @@ Foam::scalar Foam::ChargedCloud<CloudType>::agitation() const
 template<class CloudType>
 void Foam::ChargedCloud<CloudType>::info()
 {
+    if (!this->logThisStep())
+    {
+        return;
+    }
+
     CloudType::info();
 
     Info<< "    Total charge                    = " << totalCharge() << nl;

@@ -63,8 +63,44 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 )
 :
     CloudType(cloudName, rho, U, mu, g, false),
-    constProps_(this->particleProperties())
+    constProps_(this->particleProperties()),
+    trackingTolerance_
+    (
+        this->solution().dict().template lookupOrDefault<scalar>
+        (
+            "trackingTolerance",
+            1e-3
+        )
+    ),
+    logInterval_
+    (
+        this->solution().dict().template lookupOrDefault<label>
+        (
+            "logInterval",
+            1
+        )
+    )
 {
+    if (logInterval_ < 1)
+    {
+        FatalIOErrorInFunction(this->solution().dict())
+            << "Entry logInterval = " << logInterval_
+            << " is out of range: >= 1 (time steps)" << exit(FatalIOError);
+    }
+    if (!(trackingTolerance_ >= 0 && trackingTolerance_ <= 0.5))
+    {
+        FatalIOErrorInFunction(this->solution().dict())
+            << "Entry trackingTolerance = " << trackingTolerance_
+            << " is out of range [0, 0.5] (fraction of a cell; 0: track"
+            << " every step)" << exit(FatalIOError);
+    }
+    if (this->mesh().nSolutionD() != 3 && trackingTolerance_ > 0)
+    {
+        // The deviation from the mesh centre of 1-D/2-D cases is applied
+        // by the tracking
+        trackingTolerance_ = 0;
+    }
+
     if (this->solution().active() && readFields)
     {
         parcelType::readFields(*this);
@@ -81,7 +117,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 )
 :
     CloudType(c, name),
-    constProps_(c.constProps_)
+    constProps_(c.constProps_),
+    trackingTolerance_(c.trackingTolerance_),
+    logInterval_(c.logInterval_)
 {}
 
 
@@ -94,7 +132,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 )
 :
     CloudType(mesh, name, c),
-    constProps_(c.constProps_)
+    constProps_(c.constProps_),
+    trackingTolerance_(c.trackingTolerance_),
+    logInterval_(c.logInterval_)
 {}
 
 
@@ -115,6 +155,19 @@ void Foam::EllipsoidCloud<CloudType>::checkParcelProperties
     {
         parcel.setShapeFromDiameter(constProps_.shape());
     }
+}
+
+
+template<class CloudType>
+bool Foam::EllipsoidCloud<CloudType>::logThisStep() const
+{
+    const Time& time = this->db().time();
+    const label step = time.timeIndex() - time.startTimeIndex();
+    return
+        logInterval_ == 1
+     || step % logInterval_ == 0
+     || step == 1
+     || time.writeTime();
 }
 
 
@@ -197,6 +250,15 @@ void Foam::EllipsoidCloud<CloudType>::motion
 
     // Ready for the next injection (see evolve)
     td.part() = parcelType::trackingData::tpVelocityHalfStep;
+
+    // Lazy tracking: the written positions are the tracked ones
+    if (this->db().time().writeTime())
+    {
+        for (parcelType& p : *this)
+        {
+            p.flushDrift();
+        }
+    }
 }
 
 
@@ -223,7 +285,7 @@ void Foam::EllipsoidCloud<CloudType>::info()
     scalar potential = 0;
     for (const parcelType& p : *this)
     {
-        potential -= p.nParticle()*p.mass()*(this->g().value() & p.position());
+        potential -= p.nParticle()*p.mass()*(this->g().value() & p.centre());
     }
     reduce(potential, sumOp<scalar>());
 

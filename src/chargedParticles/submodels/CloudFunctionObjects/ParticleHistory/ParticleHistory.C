@@ -106,7 +106,7 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
         }
         ids[me][2*i] = p.origProc();
         ids[me][2*i + 1] = p.origId();
-        const point x = p.position();
+        const point x = p.centre();
         scalar* v = &values[me][12*i];
         for (direction c = 0; c < 3; ++c)
         {

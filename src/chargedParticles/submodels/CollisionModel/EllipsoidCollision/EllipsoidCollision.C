@@ -6,6 +6,38 @@
 #include "mathematicalConstants.H"
 #include "volFields.H"
 #include "PstreamBuffers.H"
+#include "cutoffPairs.H"
+
+#include <algorithm>
+#include <type_traits>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Keep the accessed records (marked unaccessed again) in their order
+template<class Record>
+void keepAccessedRecords(Foam::DynamicList<Record>& records)
+{
+    Foam::label n = 0;
+    forAll(records, i)
+    {
+        if (records[i].accessed())
+        {
+            records[i].setUnaccessed();
+            if (n != i)
+            {
+                records[n] = records[i];
+            }
+            ++n;
+        }
+    }
+    records.setSize(n);     // a DynamicList keeps its capacity
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
@@ -228,18 +260,6 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 
 
 template<class CloudType>
-Foam::vector Foam::EllipsoidCollision<CloudType>::pointVelocity
-(
-    const parcelType& p,
-    const point& xp,
-    const point& x
-)
-{
-    return p.U() + (p.omega() ^ (x - xp));
-}
-
-
-template<class CloudType>
 Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
 (
     const ellipsoidContact::result& c,
@@ -358,30 +378,130 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::preInteraction()
 {
-    for (parcelType& p : this->owner())
-    {
-        p.f() = Zero;
-        p.torque() = Zero;
-    }
     nBufferWarnings_ = 0;
     elasticEnergy_ = 0;
     nUnconverged_ = 0;
     contacts_.clear();
 
-    // Positions of the parcels of every cell, once per collide (the
-    // barycentric-to-Cartesian conversion is costly)
+    // Positions and angular velocities of the parcels, once per collide
+    parcels_.clear();
+    x_.clear();
+    omega_.clear();
+    for (parcelType& p : this->owner())
+    {
+        p.f() = Zero;
+        p.torque() = Zero;
+        parcels_.append(&p);
+        x_.append(p.centre());
+        omega_.append(p.omega());
+    }
+
+    // The same for the parcels of cells with referred neighbours (other
+    // processors, cyclics)
     const List<DynamicList<parcelType*>>& cellOccupancy =
         this->owner().cellOccupancy();
     cellPositions_.setSize(cellOccupancy.size());
-    forAll(cellOccupancy, celli)
+    for (const labelList& realCells : il_.ril())
     {
-        const DynamicList<parcelType*>& cell = cellOccupancy[celli];
-        pointField& x = cellPositions_[celli];
-        x.setSize(cell.size());
-        forAll(cell, k)
+        for (const label celli : realCells)
         {
-            x[k] = cell[k]->position();
+            const DynamicList<parcelType*>& cell = cellOccupancy[celli];
+            pointField& x = cellPositions_[celli];
+            x.setSize(cell.size());
+            forAll(cell, k)
+            {
+                x[k] = cell[k]->centre();
+            }
         }
+    }
+
+    if (!neighbourListValid())
+    {
+        buildNeighbourList();
+    }
+}
+
+
+template<class CloudType>
+bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
+{
+    if (listParcels_.size() != parcels_.size())
+    {
+        return false;
+    }
+    const scalar maxMove2 = sqr(0.5*skin_);
+    forAll(parcels_, i)
+    {
+        const parcelType& p = *parcels_[i];
+        if
+        (
+            listParcels_[i] != parcels_[i]
+         || listIds_[i].first() != p.origProc()
+         || listIds_[i].second() != p.origId()
+         || magSqr(x_[i] - listX_[i]) > maxMove2
+        )
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
+{
+    ++nListBuilds_;
+    const label n = parcels_.size();
+    listParcels_ = parcels_;
+    listX_ = x_;
+    listIds_.setSize(n);
+    scalarField r(n);
+    scalar rMax = 0;
+    forAll(parcels_, i)
+    {
+        const parcelType& p = *parcels_[i];
+        listIds_[i] = labelPair(p.origProc(), p.origId());
+        r[i] = cmptMax(p.semiAxes()) + bufferLayer(p);
+        rMax = max(rMax, r[i]);
+    }
+
+    // Partners j > i of each i; the cell list visits the targets i in
+    // order, so the rows come out compressed (partners sorted per row
+    // below: evaluation in cloud order)
+    listStart_.setSize(n + 1);
+    listPartners_.clear();
+    label row = 0;
+    listStart_[0] = 0;
+    if (n > 1)
+    {
+        forPairsWithinCutoff
+        (
+            x_, x_, 2*rMax + skin_, 0,
+            [&](const label i, const label j, const vector&, const scalar d2)
+            {
+                if (j > i && d2 < sqr(r[i] + r[j] + skin_))
+                {
+                    while (row < i)
+                    {
+                        listStart_[++row] = listPartners_.size();
+                    }
+                    listPartners_.append(j);
+                }
+            }
+        );
+    }
+    while (row < n)
+    {
+        listStart_[++row] = listPartners_.size();
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        std::sort
+        (
+            listPartners_.begin() + listStart_[i],
+            listPartners_.begin() + listStart_[i + 1]
+        );
     }
 }
 
@@ -391,8 +511,10 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 (
     parcelType& pA,
     const point& xA,
+    const vector& wA,
     parcelType& pB,
     const point& xB,
+    const vector& wB,
     const bool referred
 )
 {
@@ -453,7 +575,8 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     // Contact point: the midpoint (exact angular momentum balance)
     const point xc = 0.5*(c.x1 + c.x2);
-    const vector vRel = pointVelocity(pA, xA, xc) - pointVelocity(pB, xB, xc);
+    const vector vRel =
+        pointVelocity(pA.U(), wA, xA, xc) - pointVelocity(pB.U(), wB, xB, xc);
     const scalar mStar = pA.mass()*pB.mass()/(pA.mass() + pB.mass());
 
     vector& xiAB =
@@ -484,10 +607,19 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     );
 
     // Rolling friction, limited by the smaller rotational inertia
-    const vector w = pA.omega() - pB.omega();
-    const scalar Ieff =
-        min(cmptMin(pA.principalMoments()), cmptMin(pB.principalMoments()));
-    const vector Mr = rollingTorque(c, F, w, Ieff, pp_, energyWeight);
+    const vector Mr =
+        pp_.muR > 0
+      ? rollingTorque
+        (
+            c, F, wA - wB,
+            min
+            (
+                cmptMin(pA.principalMoments()),
+                cmptMin(pB.principalMoments())
+            ),
+            pp_, energyWeight
+        )
+      : Zero;
 
     // Forces and torques about the centroids (Ruan Eq. 40)
     pA.f() += F;
@@ -500,34 +632,15 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
 {
-    const labelListList& dil = il_.dil();
-    List<DynamicList<parcelType*>>& cellOccupancy =
-        this->owner().cellOccupancy();
-
-    forAll(dil, realCelli)
+    forAll(parcels_, i)
     {
-        const DynamicList<parcelType*>& cellA = cellOccupancy[realCelli];
-        const pointField& xCellA = cellPositions_[realCelli];
-        forAll(cellA, a)
+        parcelType& pA = *parcels_[i];
+        const point& xA = x_[i];
+        const vector& wA = omega_[i];
+        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
         {
-            parcelType& pA = *cellA[a];
-            const point& xA = xCellA[a];
-
-            // Parcels of the interacting cells
-            for (const label cellBi : dil[realCelli])
-            {
-                const DynamicList<parcelType*>& cellB = cellOccupancy[cellBi];
-                forAll(cellB, b)
-                {
-                    evaluatePair(pA, xA, *cellB[b], cellPositions_[cellBi][b]);
-                }
-            }
-
-            // The other parcels of this cell, each pair once
-            for (label b = a + 1; b < cellA.size(); ++b)
-            {
-                evaluatePair(pA, xA, *cellA[b], xCellA[b]);
-            }
+            const label j = listPartners_[k];
+            evaluatePair(pA, xA, wA, *parcels_[j], x_[j], omega_[j]);
         }
     }
 }
@@ -545,7 +658,8 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
     {
         for (parcelType& referred : referredParticles[refCelli])
         {
-            const point xR = referred.position();
+            const point xR = referred.centre();
+            const vector wR = referred.omega();
             for (const label realCelli : ril[refCelli])
             {
                 const DynamicList<parcelType*>& cell = cellOccupancy[realCelli];
@@ -553,7 +667,9 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
                 {
                     evaluatePair
                     (
-                        *cell[k], cellPositions_[realCelli][k], referred, xR, true
+                        *cell[k], cellPositions_[realCelli][k],
+                        cell[k]->omega(),
+                        referred, xR, wR, true
                     );
                 }
             }
@@ -566,28 +682,32 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 {
     const polyMesh& mesh = this->owner().mesh();
-    const labelListList& dil = il_.dil();
     const labelListList& directWallFaces = il_.dwfil();
-    List<DynamicList<parcelType*>>& cellOccupancy =
-        this->owner().cellOccupancy();
+    const labelListList& referredWallFaces = il_.rwfilInverse();
 
     // Contacts of one parcel (contact points on the walls) to keep
     // coplanar neighbour faces from counting one contact twice
     DynamicList<point> contactPoints;
 
-    forAll(dil, realCelli)
+    forAll(parcels_, i)
     {
-        label k = 0;
-        for (parcelType* pPtr : cellOccupancy[realCelli])
+        parcelType& p = *parcels_[i];
+        const label celli = p.cell();
+        if
+        (
+            directWallFaces[celli].empty()
+         && referredWallFaces[celli].empty()
+        )
         {
-            parcelType& p = *pPtr;
-            const point& xp = cellPositions_[realCelli][k++];
+            continue;
+        }
+        {
+            const point& xp = x_[i];
+            const vector& wp = omega_[i];
             const bool sphere = p.isSphere();
             const scalar r = cmptMax(p.semiAxes()) + bufferLayer(p);
-            std::unique_ptr<const ellipsoid> ePtr
-            (
-                sphere ? nullptr : new ellipsoid(shell(p, xp))
-            );
+            // The collision shell, made for the first face in reach
+            std::unique_ptr<const ellipsoid> ePtr;
             contactPoints.clear();
 
             // face, its points, centre, unit normal out of the domain, patch
@@ -598,6 +718,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 const pointField& pts,
                 const point& fc,
                 const vector& nOutOfDomain,
+                const scalar faceArea,
                 const label patchi
             )
             {
@@ -609,6 +730,10 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     return;
                 }
 
+                if (!sphere && !ePtr)
+                {
+                    ePtr.reset(new ellipsoid(shell(p, xp)));
+                }
                 const ellipsoidContact::result c =
                     sphere
                   ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
@@ -621,7 +746,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 // The contact belongs to this face if its plane point lies
                 // on the face (within round-off of the face size)
                 // (bounding box first: most coplanar neighbours fail it)
-                const scalar tol = 1e-9*Foam::sqrt(f.mag(pts)) + SMALL*r;
+                const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
                 const boundBox bb(pts, f, false);
                 if
                 (
@@ -650,7 +775,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 }
 
                 const point xc = 0.5*(c.x1 + c.x2);
-                const vector vRel = pointVelocity(p, xp, xc);
+                const vector vRel = pointVelocity(p.U(), wp, xp, xc);
                 vector& xi =
                     p.collisionRecords().matchWallRecord
                     (
@@ -659,10 +784,13 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     ).collisionData();
 
                 const vector F = contactForce(c, vRel, p.mass(), pw_, xi);
-                const vector Mr = rollingTorque
-                (
-                    c, F, p.omega(), cmptMin(p.principalMoments()), pw_
-                );
+                const vector Mr =
+                    pw_.muR > 0
+                  ? rollingTorque
+                    (
+                        c, F, wp, cmptMin(p.principalMoments()), pw_
+                    )
+                  : Zero;
                 checkBufferLayer
                 (
                     p, nullptr, c.overlap, bufferLayer(p),
@@ -673,21 +801,23 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             };
 
             // Mesh face centres and areas are cached by the mesh
-            for (const label facei : directWallFaces[realCelli])
+            for (const label facei : directWallFaces[celli])
             {
                 const vector& Sf = mesh.faceAreas()[facei];
+                const scalar magSf = mag(Sf);
                 wallFace
                 (
                     mesh.faces()[facei],
                     mesh.points(),
                     mesh.faceCentres()[facei],
-                    Sf/mag(Sf),
+                    Sf/magSf,
+                    magSf,
                     // The patch only for the listed contacts (a search)
                     recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
                 );
             }
 
-            for (const label rwfi : il_.rwfilInverse()[realCelli])
+            for (const label rwfi : referredWallFaces[celli])
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
                 const pointField& pts = rwf.points();
@@ -697,6 +827,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     pts,
                     rwf.centre(pts),
                     rwf.unitNormal(pts),
+                    rwf.mag(pts),
                     rwf.patchIndex()
                 );
             }
@@ -708,10 +839,21 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::postInteraction()
 {
-    // Forget the history of contacts that ended
-    for (parcelType& p : this->owner())
+    // Forget the history of contacts that ended: what
+    // CollisionRecordList::update() does, in place (update() copies both
+    // record lists into new ones for every parcel and step: two
+    // allocations each, 6 % of a settled bed of spheres). The lists
+    // belong to the (non-const) parcels; CollisionRecordList only has
+    // const accessors.
+    for (parcelType* p : parcels_)
     {
-        p.collisionRecords().update();
+        auto& records = p->collisionRecords();
+        typedef typename std::decay<decltype(records.pairRecords())>::type
+            pairList;
+        typedef typename std::decay<decltype(records.wallRecords())>::type
+            wallList;
+        keepAccessedRecords(const_cast<pairList&>(records.pairRecords()));
+        keepAccessedRecords(const_cast<wallList&>(records.wallRecords()));
     }
 
     if (nBufferWarnings_ > 0 && nBufferWarningsTotal_ > 5)
@@ -780,6 +922,23 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     nUnconverged_(0),
     dissipatedEnergy_(0),
     elasticEnergy_(0),
+    parcels_(),
+    x_(),
+    omega_(),
+    skin_
+    (
+        this->coeffDict().template lookupOrDefault<scalar>
+        (
+            "neighbourSkin",
+            0.25*readPositive(this->coeffDict(), "maxInteractionDistance")
+        )
+    ),
+    listParcels_(),
+    listIds_(),
+    listX_(),
+    listStart_(),
+    listPartners_(),
+    nListBuilds_(0),
     cellPositions_(),
     recordContacts_(false),
     contacts_(),
@@ -863,6 +1022,14 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             << exit(FatalIOError);
     }
 
+    if (!(skin_ > 0) || !std::isfinite(skin_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry neighbourSkin = " << skin_
+            << " is out of range: it must be finite and > 0"
+            << exit(FatalIOError);
+    }
+
     if (resolutionSteps_ < 1)
     {
         FatalIOErrorInFunction(coeffs)
@@ -906,7 +1073,10 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     // itself head-on (m* = m/2, relative speed 2|U|) at its sharpest tip
     // (radius of curvature c^2/a for semi-axes a >= b >= c, R* = R/2);
     // a wall contact (m* = m, R* = R, speed |U|) lasts longer
-    scalar minTc = GREAT;
+    // Hertz collision duration (Johnson 1985)
+    //     t_c = 2.868 (m*^2/(R* E*^2 v))^(1/5),
+    // minimised through its monotonic argument (one pow per step)
+    scalar minTcArg = GREAT;
     scalar minRayleigh = GREAT;
 
     const scalar E = pp_.Estar;
@@ -918,21 +1088,21 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
         const scalar m = p.mass();
         const scalar v = max(2*mag(p.U()), VSMALL);
 
-        // Hertz collision duration (Johnson 1985)
-        const scalar tc =
-            2.868*Foam::pow(sqr(0.5*m)/(0.5*Rtip*sqr(E)*v), 0.2);
-        minTc = min(minTc, tc);
+        minTcArg = min(minTcArg, sqr(0.5*m)/(0.5*Rtip*sqr(E)*v));
 
         // Rayleigh time step, Rasera Eq. (13), for the report
         minRayleigh = min
         (
             minRayleigh,
-            constant::mathematical::pi*cmptMin(s)*Foam::sqrt(p.rho()/G)
-           /(0.8766 + 0.163*particleNu_)
+            cmptMin(s)*Foam::sqrt(p.rho())
         );
     }
-    reduce(minTc, minOp<scalar>());
+    reduce(minTcArg, minOp<scalar>());
     reduce(minRayleigh, minOp<scalar>());
+    const scalar minTc =
+        minTcArg < GREAT ? 2.868*Foam::pow(minTcArg, 0.2) : GREAT;
+    minRayleigh *=
+        constant::mathematical::pi/Foam::sqrt(G)/(0.8766 + 0.163*particleNu_);
 
     const scalar deltaT = this->owner().mesh().time().deltaTValue();
     if (minTc >= GREAT)
@@ -947,7 +1117,10 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
         Info<< "    Collision time " << minTc << " s / "
             << resolutionSteps_ << " steps = " << dtC
             << " s (Rayleigh time step, Rasera Eq. 13: " << minRayleigh
-            << " s): " << n << " sub-cycles of " << deltaT/n << " s" << endl;
+            << " s): " << n << " sub-cycles of " << deltaT/n << " s" << nl
+            << "    Neighbour list (skin " << skin_ << " m): "
+            << listPartners_.size() << " candidate pairs, "
+            << nListBuilds_ << " builds so far" << endl;
     }
 
     return n;

@@ -43,7 +43,7 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
     label i = 0;
     for (const auto& p : this->owner())
     {
-        x[i] = p.position();
+        x[i] = p.centre();
         q[i] = p.q();
         ++i;
     }

@@ -73,7 +73,8 @@ void Foam::MeshPoisson<CloudType>::calculate()
         this->combine(allC, allQ, cS, dummy, o);
     }
 
-    // Mesh field at the parcels (their own tet coordinates: no search),
+    // Mesh field at the parcels (their own tet coordinates: no search;
+    // at the centre within the cell while lazy tracking lets it drift),
     // then the near-field correction
     solver_->update(xS, qS, offset, cells);
     const interpolation<vector>& EMesh = solver_->interpolator();
@@ -81,7 +82,10 @@ void Foam::MeshPoisson<CloudType>::calculate()
     i = 0;
     for (const auto& p : this->owner())
     {
-        E[i++] = EMesh.interpolate(p.coordinates(), p.currentTetIndices());
+        E[i++] =
+            p.drift() == vector::zero
+          ? EMesh.interpolate(p.coordinates(), p.currentTetIndices())
+          : EMesh.interpolate(p.centre(), p.cell());
     }
     solver_->addNearField
     (
