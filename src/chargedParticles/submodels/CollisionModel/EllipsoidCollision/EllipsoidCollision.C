@@ -398,19 +398,22 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
 
     // The same for the parcels of cells with referred neighbours (other
     // processors, cyclics)
-    const List<DynamicList<parcelType*>>& cellOccupancy =
-        this->owner().cellOccupancy();
-    cellPositions_.setSize(cellOccupancy.size());
-    for (const labelList& realCells : il_.ril())
+    if (referring())
     {
-        for (const label celli : realCells)
+        const List<DynamicList<parcelType*>>& cellOccupancy =
+            this->owner().cellOccupancy();
+        cellPositions_.setSize(cellOccupancy.size());
+        for (const labelList& realCells : il_.ril())
         {
-            const DynamicList<parcelType*>& cell = cellOccupancy[celli];
-            pointField& x = cellPositions_[celli];
-            x.setSize(cell.size());
-            forAll(cell, k)
+            for (const label celli : realCells)
             {
-                x[k] = cell[k]->centre();
+                const DynamicList<parcelType*>& cell = cellOccupancy[celli];
+                pointField& x = cellPositions_[celli];
+                x.setSize(cell.size());
+                forAll(cell, k)
+                {
+                    x[k] = cell[k]->centre();
+                }
             }
         }
     }
@@ -1132,12 +1135,19 @@ void Foam::EllipsoidCollision<CloudType>::collide()
 {
     preInteraction();
 
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    const label startOfRequests = Pstream::nRequests();
-    il_.sendReferredData(this->owner().cellOccupancy(), pBufs);
-    realRealInteraction();
-    il_.receiveReferredData(pBufs, startOfRequests);
-    realReferredInteraction();
+    if (referring())
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        const label startOfRequests = Pstream::nRequests();
+        il_.sendReferredData(this->owner().cellOccupancy(), pBufs);
+        realRealInteraction();
+        il_.receiveReferredData(pBufs, startOfRequests);
+        realReferredInteraction();
+    }
+    else
+    {
+        realRealInteraction();
+    }
 
     wallInteraction();
     postInteraction();
