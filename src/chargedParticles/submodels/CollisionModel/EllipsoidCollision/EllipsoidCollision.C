@@ -686,6 +686,21 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 {
     const polyMesh& mesh = this->owner().mesh();
     const labelListList& directWallFaces = il_.dwfil();
+
+    // Bounding boxes of the boundary faces (the mesh is static)
+    if (wallFaceBb_.size() != mesh.nBoundaryFaces())
+    {
+        wallFaceBb_.setSize(mesh.nBoundaryFaces());
+        forAll(wallFaceBb_, bFacei)
+        {
+            wallFaceBb_[bFacei] = boundBox
+            (
+                mesh.points(),
+                mesh.faces()[mesh.nInternalFaces() + bFacei],
+                false
+            );
+        }
+    }
     const labelListList& referredWallFaces = il_.rwfilInverse();
 
     // Contacts of one parcel (contact points on the walls) to keep
@@ -722,13 +737,20 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 const point& fc,
                 const vector& nOutOfDomain,
                 const scalar faceArea,
+                const boundBox& bb,
                 const label patchi
             )
             {
-                // The face's plane out of reach of the shell's bounding
-                // sphere: no contact (cheap test before any geometry)
+                // The face's plane or its bounding box out of reach of the
+                // shell's bounding sphere: no contact (cheap tests before
+                // any geometry; the box test drops the coplanar neighbours
+                // of the face in contact)
                 const scalar h = (xp - fc) & nOutOfDomain;
                 if (h <= -r || h >= r)
+                {
+                    return;
+                }
+                if (magSqr(xp - bb.nearest(xp)) >= sqr(r))
                 {
                     return;
                 }
@@ -750,7 +772,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 // on the face (within round-off of the face size)
                 // (bounding box first: most coplanar neighbours fail it)
                 const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
-                const boundBox bb(pts, f, false);
                 if
                 (
                     cmptMin(c.x2 - bb.min()) < -tol
@@ -815,6 +836,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     mesh.faceCentres()[facei],
                     Sf/magSf,
                     magSf,
+                    wallFaceBb_[facei - mesh.nInternalFaces()],
                     // The patch only for the listed contacts (a search)
                     recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
                 );
@@ -831,6 +853,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     rwf.centre(pts),
                     rwf.unitNormal(pts),
                     rwf.mag(pts),
+                    boundBox(pts, rwf, false),
                     rwf.patchIndex()
                 );
             }
@@ -943,6 +966,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     listPartners_(),
     nListBuilds_(0),
     cellPositions_(),
+    wallFaceBb_(),
     recordContacts_(false),
     contacts_(),
     particleE_(0),
