@@ -256,7 +256,7 @@ void Foam::EllipsoidCloud<CloudType>::motion
     {
         for (parcelType& p : *this)
         {
-            p.flushDrift();
+            p.trackDrift();
         }
     }
 }

@@ -200,13 +200,6 @@ void Foam::EllipsoidParcel<ParcelType>::trackDrift()
 
 
 template<class ParcelType>
-void Foam::EllipsoidParcel<ParcelType>::flushDrift()
-{
-    trackDrift();
-}
-
-
-template<class ParcelType>
 void Foam::EllipsoidParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
