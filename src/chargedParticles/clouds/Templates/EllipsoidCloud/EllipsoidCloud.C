@@ -100,6 +100,21 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
         // by the tracking
         trackingTolerance_ = 0;
     }
+    if
+    (
+        trackingTolerance_ > 0
+     && this->solution().active()
+     && this->collision().active()
+     && this->collision().type() != "ellipsoidCollision"
+    )
+    {
+        // Other collision models (OpenFOAM's pairCollision) read the
+        // tracked positions, not the centres
+        Info<< "    Lazy tracking off: collision model "
+            << this->collision().type() << " reads the tracked positions"
+            << endl;
+        trackingTolerance_ = 0;
+    }
 
     if (this->solution().active() && readFields)
     {
