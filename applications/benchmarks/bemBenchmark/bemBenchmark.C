@@ -41,6 +41,7 @@ Description
 #include <cstdio>
 #include <ctime>
 #include <functional>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -57,7 +58,17 @@ struct run
 };
 
 
-run spheres
+//- A solved case, kept alive for the timing rounds
+struct solvedCase
+{
+    std::unique_ptr<bemSolver> solver;
+    run r;
+    label nTimes;                   // products to time
+    std::vector<scalar> times;
+};
+
+
+solvedCase solveSpheres
 (
     const label np,
     const label n,
@@ -70,7 +81,9 @@ run spheres
     bemSolverControls c;
     c.matvec = mv;
     c.precondition = precondition;
-    bemSolver s(1, c);
+    solvedCase sc;
+    sc.solver.reset(new bemSolver(1, c));
+    bemSolver& s = *sc.solver;
     const label sh = s.shape(vector(1, 1, 1), n);
     const scalar A = sum(s.mesh(sh).areas());
     for (label p = 0; p < np; ++p)
@@ -78,16 +91,67 @@ run spheres
         s.addParticle(sh, point(p*(2 + gap), 0, 0), tensor::I, kp, A);
     }
     const auto& info = s.solve();
-    run r;
+    run& r = sc.r;
     r.iterations = info.iterations;
     r.perIterMatvec = info.matvecTime/max(info.iterations, label(1));
     r.perIter = info.solveTime/max(info.iterations, label(1));
     r.perSolve = info.setupTime + info.solveTime;
     r.setup = info.setupTime;
+    r.perMatvec = 0;
     // Median of repeated products: less sensitive to a loaded machine than
     // the few products inside one solve
-    r.perMatvec = s.matvecCpuTime(mv == bemMatvecMethod::direct && np*n > 20000 ? 3 : 7);
-    return r;
+    sc.nTimes = mv == bemMatvecMethod::direct && np*n > 20000 ? 3 : 7;
+    return sc;
+}
+
+
+run spheres
+(
+    const label np,
+    const label n,
+    const scalar gap,
+    const bemMatvecMethod mv,
+    const bool precondition,
+    const scalar kp = 10
+)
+{
+    solvedCase sc = solveSpheres(np, n, gap, mv, precondition, kp);
+    sc.r.perMatvec = sc.solver->matvecCpuTime(sc.nTimes);
+    return sc.r;
+}
+
+
+// Median time per product of every case, timed in rounds: each round times
+// one product of each case (the median of three in a row, i.e. with warm
+// caches, for products under 0.05 s), so that a slow phase of the shared
+// machine (another job on the sibling core) hits all sizes alike instead of
+// one
+void timeInRounds(std::vector<solvedCase>& cases)
+{
+    label nRounds = 0;
+    for (const solvedCase& c : cases)
+    {
+        nRounds = max(nRounds, c.nTimes);
+    }
+    for (label round = 0; round < nRounds; ++round)
+    {
+        for (solvedCase& c : cases)
+        {
+            if (round < c.nTimes)
+            {
+                c.times.push_back
+                (
+                    c.solver->matvecCpuTime(c.r.perIterMatvec < 0.05 ? 3 : 1)
+                );
+            }
+        }
+    }
+    for (solvedCase& c : cases)
+    {
+        std::sort(c.times.begin(), c.times.end());
+        c.r.perMatvec = c.times[c.times.size()/2];
+        c.solver.reset();
+    }
 }
 
 
@@ -317,12 +381,27 @@ int main(int argc, char *argv[])
             "\n## 1. Two spheres, gap 0.5R, kappa_p 10: time vs patches per"
             " particle n\n\n| n | N |%s", header3
         );
-        std::vector<scalar> x, td, tt, tf;
+        const bemMatvecMethod mvs[3] =
+        {
+            bemMatvecMethod::direct, bemMatvecMethod::treecode,
+            bemMatvecMethod::fmm
+        };
+        std::vector<solvedCase> cases;
         for (const label n : ns)
         {
-            const run d = spheres(2, n, 0.5, bemMatvecMethod::direct, true);
-            const run t = spheres(2, n, 0.5, bemMatvecMethod::treecode, true);
-            const run f = spheres(2, n, 0.5, bemMatvecMethod::fmm, true);
+            for (const bemMatvecMethod mv : mvs)
+            {
+                cases.push_back(solveSpheres(2, n, 0.5, mv, true));
+            }
+        }
+        timeInRounds(cases);
+        std::vector<scalar> x, td, tt, tf;
+        for (size_t i = 0; i < ns.size(); ++i)
+        {
+            const label n = ns[i];
+            const run& d = cases[3*i].r;
+            const run& t = cases[3*i + 1].r;
+            const run& f = cases[3*i + 2].r;
             std::printf("| %d | %d |", n, 2*n);
             printRuns(d, t, f);
             // Fit over n >= 392 (smaller n: fixed costs dominate)
@@ -352,12 +431,23 @@ int main(int argc, char *argv[])
             " iters | FMM: s/matvec (median) | s/iter (GMRES) | s/solve |"
             " iters |\n|---|---|---|---|---|---|---|---|---|---|\n"
         );
-        std::vector<scalar> x, tt, tf;
-        for (const label n : {1600, 5000, 10000, 20000})
+        const std::vector<label> ns{1600, 5000, 10000, 20000};
+        std::vector<solvedCase> cases;
+        for (const label n : ns)
         {
-            const run t = spheres(2, n, 0.5, bemMatvecMethod::treecode, true);
-            const run f = spheres(2, n, 0.5, bemMatvecMethod::fmm, true);
-            std::printf("| %d | %d |", n, 2*n);
+            cases.push_back
+            (
+                solveSpheres(2, n, 0.5, bemMatvecMethod::treecode, true)
+            );
+            cases.push_back(solveSpheres(2, n, 0.5, bemMatvecMethod::fmm, true));
+        }
+        timeInRounds(cases);
+        std::vector<scalar> x, tt, tf;
+        for (size_t i = 0; i < ns.size(); ++i)
+        {
+            const run& t = cases[2*i].r;
+            const run& f = cases[2*i + 1].r;
+            std::printf("| %d | %d |", ns[i], 2*ns[i]);
             for (const run* r : {&t, &f})
             {
                 std::printf
@@ -368,7 +458,7 @@ int main(int argc, char *argv[])
             }
             std::printf("\n");
             std::fflush(stdout);
-            x.push_back(n);
+            x.push_back(ns[i]);
             tt.push_back(t.perMatvec);
             tf.push_back(f.perMatvec);
         }
@@ -390,12 +480,27 @@ int main(int argc, char *argv[])
             "\n## 2. Np spheres in a row, n = 392, gap 0.2R, kappa_p 10:"
             " time vs Np\n\n| Np | N |%s", header3
         );
-        std::vector<scalar> x, td, tt, tf;
+        const bemMatvecMethod mvs[3] =
+        {
+            bemMatvecMethod::direct, bemMatvecMethod::treecode,
+            bemMatvecMethod::fmm
+        };
+        std::vector<solvedCase> cases;
         for (const label np : nps)
         {
-            const run d = spheres(np, 392, 0.2, bemMatvecMethod::direct, true);
-            const run t = spheres(np, 392, 0.2, bemMatvecMethod::treecode, true);
-            const run f = spheres(np, 392, 0.2, bemMatvecMethod::fmm, true);
+            for (const bemMatvecMethod mv : mvs)
+            {
+                cases.push_back(solveSpheres(np, 392, 0.2, mv, true));
+            }
+        }
+        timeInRounds(cases);
+        std::vector<scalar> x, td, tt, tf;
+        for (size_t i = 0; i < nps.size(); ++i)
+        {
+            const label np = nps[i];
+            const run& d = cases[3*i].r;
+            const run& t = cases[3*i + 1].r;
+            const run& f = cases[3*i + 2].r;
             std::printf("| %d | %d |", np, 392*np);
             printRuns(d, t, f);
             x.push_back(np);

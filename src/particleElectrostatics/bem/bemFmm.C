@@ -490,75 +490,45 @@ void Foam::bemFmm::tree::build
 
 void Foam::bemFmm::buildTables()
 {
+    // Numbering and components of the multi-indices as the templates above
     const label p = p_;
     ncDeg_.resize(p + 1);
     for (label q = 0; q <= p; ++q)
     {
-        ncDeg_[q] = (q + 1)*(q + 2)*(q + 3)/6;
+        ncDeg_[q] = nCoef(q);
     }
-    nc_ = ncDeg_[p];
-
-    // Multi-indices ordered by degree (|n| <= q is a prefix for every q)
-    std::vector<FixedList<label, 3>> n;
-    std::vector<label> index((p + 1)*(p + 1)*(p + 1), -1);
-    auto id = [&](label a, label b, label c)
-    {
-        return index[(a*(p + 1) + b)*(p + 1) + c];
-    };
-    for (label d = 0; d <= p; ++d)
-    {
-        for (label a = d; a >= 0; --a)
-        {
-            for (label b = d - a; b >= 0; --b)
-            {
-                const label c = d - a - b;
-                index[(a*(p + 1) + b)*(p + 1) + c] = n.size();
-                n.push_back(FixedList<label, 3>({a, b, c}));
-            }
-        }
-    }
+    nc_ = nCoef(p);
 
     mi_.resize(nc_);
     for (label i = 0; i < nc_; ++i)
     {
-        const FixedList<label, 3>& m = n[i];
         multiIndex& t = mi_[i];
-        t.sign = (m[0] + m[1] + m[2]) % 2 ? -1 : 1;
+        t.sign = degOf(i) % 2 ? -1 : 1;
         t.dim = 0;
         t.prev = 0;
         t.prev2 = 0;
         t.coef = 0;
         t.inv = 0;
         if (i == 0) continue;
-        t.dim = m[0] > 0 ? 0 : m[1] > 0 ? 1 : 2;
-        FixedList<label, 3> m1(m);
-        m1[t.dim] -= 1;
-        t.prev = id(m1[0], m1[1], m1[2]);
-        if (m[t.dim] >= 2)
-        {
-            FixedList<label, 3> m2(m1);
-            m2[t.dim] -= 1;
-            t.prev2 = id(m2[0], m2[1], m2[2]);
-        }
-        t.coef = m[t.dim] - 1;
-        t.inv = 1.0/m[t.dim];
+        t.dim = dimOf(i);
+        const label ni = compOf(i, t.dim);
+        t.prev = lowerOf(i, 1);
+        t.prev2 = ni > 1 ? lowerOf(i, 2) : 0;
+        t.coef = ni - 1;
+        t.inv = 1.0/ni;
     }
 
-    // M2L: for each k, n + k for |n| <= p - |k|
+    // M2L: for each k, the index of n + k for |n| <= p - |k|
     m2lOff_.resize(nc_);
     m2lLen_.resize(nc_);
     m2lIdx_.clear();
     for (label k = 0; k < nc_; ++k)
     {
-        const label dk = n[k][0] + n[k][1] + n[k][2];
         m2lOff_[k] = m2lIdx_.size();
-        m2lLen_[k] = ncDeg_[p - dk];
+        m2lLen_[k] = nCoef(p - degOf(k));
         for (label i = 0; i < m2lLen_[k]; ++i)
         {
-            m2lIdx_.push_back
-            (
-                id(n[i][0] + n[k][0], n[i][1] + n[k][1], n[i][2] + n[k][2])
-            );
+            m2lIdx_.push_back(sumIndex(k, i));
         }
     }
 
@@ -570,13 +540,13 @@ void Foam::bemFmm::buildTables()
     {
         for (label j = 0; j < nc_; ++j)
         {
-            if (n[j][0] <= n[i][0] && n[j][1] <= n[i][1] && n[j][2] <= n[i][2])
+            if (aOf(j) <= aOf(i) && bOf(j) <= bOf(i) && cOf(j) <= cOf(i))
             {
                 shN_.push_back(i);
                 shM_.push_back(j);
                 shNM_.push_back
                 (
-                    id(n[i][0] - n[j][0], n[i][1] - n[j][1], n[i][2] - n[j][2])
+                    indexOf(aOf(i) - aOf(j), bOf(i) - bOf(j), cOf(i) - cOf(j))
                 );
             }
         }
@@ -585,12 +555,13 @@ void Foam::bemFmm::buildTables()
     // L2P: k + e_d for |k| <= p - 1
     for (label d = 0; d < 3; ++d)
     {
-        plus_[d].resize(ncDeg_[p - 1]);
-        for (label k = 0; k < ncDeg_[p - 1]; ++k)
+        plus_[d].resize(nCoef(p - 1));
+        for (label k = 0; k < nCoef(p - 1); ++k)
         {
-            FixedList<label, 3> m(n[k]);
-            m[d] += 1;
-            plus_[d][k] = id(m[0], m[1], m[2]);
+            plus_[d][k] = indexOf
+            (
+                aOf(k) + (d == 0), bOf(k) + (d == 1), cOf(k) + (d == 2)
+            );
         }
     }
 
