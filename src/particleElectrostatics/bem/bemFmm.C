@@ -766,8 +766,9 @@ void Foam::bemFmm::apply(const tree& T, const interactions& I) const
 
     // M2L: L_k(t) += sum_n (-1)^|n| M_n(s) D^(n+k)(z_t - z_s), and if
     // mutual L_k(s) += sum_n (-1)^|n| M_n(t) D^(n+k)(z_s - z_t), where
-    // D^m(z_s - z_t) = (-1)^|m| D^m(z_t - z_s). Loop order: for each n an
-    // update of the contiguous L_k, |k| <= p - |n| (the row of n + k)
+    // D^m(z_s - z_t) = (-1)^|m| D^m(z_t - z_s). Mutual and p <= 8: the
+    // unrolled kernels; otherwise table-driven, for each n an update of the
+    // contiguous L_k, |k| <= p - |n| (the row of n + k)
     std::vector<scalar> Dbuf(2*nc);
     scalar* __restrict__ D = Dbuf.data();
     scalar* __restrict__ Dm = D + nc;
