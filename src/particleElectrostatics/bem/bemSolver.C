@@ -50,6 +50,9 @@ Foam::bemSolverControls Foam::bemSolverControls::read
     dict.readIfPresent("theta", c.theta);
     dict.readIfPresent("order", c.order);
     dict.readIfPresent("leafSize", c.leafSize);
+    dict.readIfPresent("fmmOrder", c.fmmOrder);
+    dict.readIfPresent("fmmTheta", c.fmmTheta);
+    dict.readIfPresent("fmmLeafSize", c.fmmLeafSize);
     dict.readIfPresent("precondition", c.precondition);
     dict.readIfPresent("maxPreconditionerPatches", c.maxPreconditionerPatches);
     dict.readIfPresent("nearQuadrature", c.nearQuadrature);
@@ -62,10 +65,11 @@ Foam::bemSolverControls Foam::bemSolverControls::read
     {
         if (w == "direct") c.matvec = bemMatvecMethod::direct;
         else if (w == "treecode") c.matvec = bemMatvecMethod::treecode;
+        else if (w == "fmm") c.matvec = bemMatvecMethod::fmm;
         else
         {
             FatalIOErrorInFunction(dict)
-                << "matvec " << w << " unknown; allowed: direct treecode"
+                << "matvec " << w << " unknown; allowed: direct treecode fmm"
                 << exit(FatalIOError);
         }
     }
@@ -98,6 +102,17 @@ Foam::bemSolverControls Foam::bemSolverControls::read
         FatalIOErrorInFunction(dict)
             << "theta " << c.theta << " must be in (0, 1] and order "
             << c.order << " in [0, 2]" << exit(FatalIOError);
+    }
+    if
+    (
+        c.fmmOrder < 1 || c.fmmOrder > 10
+     || !(c.fmmTheta > 0 && c.fmmTheta < 1) || c.fmmLeafSize < 1
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "fmmOrder " << c.fmmOrder << " must be in [1, 10], fmmTheta "
+            << c.fmmTheta << " in (0, 1) and fmmLeafSize " << c.fmmLeafSize
+            << " >= 1" << exit(FatalIOError);
     }
     if (!(c.nearFactor >= 0))
     {
@@ -295,6 +310,7 @@ void Foam::bemSolver::assemble()
 
     // Fast sum
     tree_.reset();
+    fmm_.reset();
     if (ctrl_.matvec == matvecMethod::treecode)
     {
         tree_.reset
@@ -302,6 +318,16 @@ void Foam::bemSolver::assemble()
             new bemTreecode
             (
                 x_, ctrl_.theta, ctrl_.order, ctrl_.leafSize, owner_
+            )
+        );
+    }
+    else if (ctrl_.matvec == matvecMethod::fmm)
+    {
+        fmm_.reset
+        (
+            new bemFmm
+            (
+                x_, ctrl_.fmmOrder, ctrl_.fmmTheta, ctrl_.fmmLeafSize, owner_
             )
         );
     }
@@ -386,19 +412,34 @@ void Foam::bemSolver::assemble()
 }
 
 
+void Foam::bemSolver::fieldOfAll
+(
+    const scalarField& q,
+    vectorField& E,
+    scalarField* phi
+) const
+{
+    if (fmm_)
+    {
+        fmm_->evaluate(q, x_, true, E, phi);
+    }
+    else if (tree_)
+    {
+        tree_->evaluate(q, x_, true, E, phi);
+    }
+    else
+    {
+        bemTreecode::direct(x_, q, x_, true, E, phi);
+    }
+}
+
+
 void Foam::bemSolver::applyK(const scalarField& x, scalarField& y) const
 {
     const label N = x_.size();
     scalarField q(a_*x);
     vectorField E;
-    if (tree_)
-    {
-        tree_->evaluate(q, x_, true, E, nullptr);
-    }
-    else
-    {
-        bemTreecode::direct(x_, q, x_, true, E, nullptr);
-    }
+    fieldOfAll(q, E, nullptr);
     y.setSize(N);
     for (label i = 0; i < N; ++i)
     {
@@ -483,12 +524,19 @@ void Foam::bemSolver::computeOutputs()
     // eps0 E of all other particles' surface charges, eps0 psi of all
     vectorField E(N, Zero);
     scalarField phi(N, Zero);
-    if (tree_ && N > ctrl_.directOutputMax)
+    if ((tree_ || fmm_) && N > ctrl_.directOutputMax)
     {
         // Field of the other particles (exact exclusion), potential of all
         vectorField Eall;
-        tree_->evaluate(q, x_, true, Eall, &phi);
-        tree_->evaluateOthers(q, E, nullptr);
+        fieldOfAll(q, Eall, &phi);
+        if (fmm_)
+        {
+            fmm_->evaluateOthers(q, E, nullptr);
+        }
+        else
+        {
+            tree_->evaluateOthers(q, E, nullptr);
+        }
     }
     else
     {

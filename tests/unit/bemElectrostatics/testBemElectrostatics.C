@@ -14,11 +14,13 @@
       - neutral prolate spheroid in a uniform field: Eqs. 49-50 with the
         depolarisation factors by quadrature, themselves checked against the
         closed form of a prolate spheroid;
-      - treecode against the direct sum.
+      - treecode and fast multipole method against the direct sum; the
+        solver with the FMM matvec against the direct matvec.
 \*---------------------------------------------------------------------------*/
 
 #include "bemSolver.H"
 #include "bemTreecode.H"
+#include "bemFmm.H"
 #include "inducedDipole.H"
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
@@ -92,6 +94,55 @@ scalar twoSphereForce
     return s.forces()[1].x();
 }
 
+// Patch centres, normals and charges of np unit spheres (n patches each)
+// along x, surface gap 0.5: smooth density +-cos t (alternating sign) and
+// random charges, as bemBenchmark section 5
+void sphereCharges
+(
+    const label np,
+    const label n,
+    pointField& x,
+    vectorField& nrm,
+    scalarField& qs,
+    scalarField& qr,
+    labelList& group
+)
+{
+    const ellipsoidSurfaceMesh m(vector(1, 1, 1), n);
+    const label ns = m.size();
+    x.setSize(np*ns);
+    nrm.setSize(np*ns);
+    qs.setSize(np*ns);
+    qr.setSize(np*ns);
+    group.setSize(np*ns);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<scalar> U(-1, 1);
+    for (label p = 0; p < np; ++p)
+    {
+        for (label k = 0; k < ns; ++k)
+        {
+            const label i = p*ns + k;
+            x[i] = m.centres()[k] + vector(2.5*p, 0, 0);
+            nrm[i] = m.normals()[k];
+            qs[i] = (p % 2 ? -1 : 1)*m.areas()[k]*m.centres()[k].z();
+            qr[i] = m.areas()[k]*U(rng);
+            group[i] = p;
+        }
+    }
+}
+
+
+scalar relL2(const vectorField& a, const vectorField& b)
+{
+    return Foam::sqrt(sum(magSqr(a - b))/sum(magSqr(b)));
+}
+
+
+scalar relL2(const scalarField& a, const scalarField& b)
+{
+    return Foam::sqrt(sum(sqr(a - b))/sum(sqr(b)));
+}
+
 } // namespace
 
 
@@ -130,6 +181,272 @@ TEST(bemElectrostatics, TreecodeAgainstDirect)
         prev = err;
     }
     EXPECT_LT(prev, 1e-4);
+}
+
+
+TEST(bemElectrostatics, FmmAgainstDirect)
+{
+    // Two spheres, 1000 patches each: a smooth density (n.E nearly
+    // cancels: the hard case for a fast sum) and random charges
+    pointField x;
+    vectorField nrm;
+    scalarField qs, qr;
+    labelList group;
+    sphereCharges(2, 1000, x, nrm, qs, qr, group);
+    vectorField Es, Er;
+    scalarField ps, pr;
+    bemTreecode::direct(x, qs, x, true, Es, &ps);
+    bemTreecode::direct(x, qr, x, true, Er, &pr);
+    const scalarField nEs(nrm & Es);
+
+    // Per M2L the truncation |n| + |k| <= p leaves a field error of order
+    // ((rA + rB)/R)^p < theta^p relative to the interaction, less the
+    // cancellation of far and near parts: the total must stay below
+    // theta^(p+1), and two more orders must gain at least theta^2
+    const scalar theta = 0.5;
+    scalar prev = GREAT;
+    for (const label p : {2, 4, 6, 8})
+    {
+        const bemFmm f(x, p, theta, 16);
+        vectorField E;
+        scalarField ph;
+        f.evaluate(qs, x, true, E, &ph);
+        const scalar eE = relL2(E, Es), eP = relL2(ph, ps);
+        const scalar enE = relL2(scalarField(nrm & E), nEs);
+        f.evaluate(qr, x, true, E, &ph);
+        const scalar eR = relL2(E, Er);
+        std::printf
+        (
+            "FMM p %d theta %.1f: rel. L2 error smooth E %.2e phi %.2e"
+            " n.E %.2e, random E %.2e\n", p, theta, eE, eP, enE, eR
+        );
+        const scalar bound = std::pow(theta, p + 1);
+        EXPECT_LT(eE, bound);
+        EXPECT_LT(eP, bound);
+        EXPECT_LT(enE, bound);
+        EXPECT_LT(eR, bound);
+        EXPECT_LT(eE, sqr(theta)*prev);
+        prev = eE;
+        EXPECT_GT(f.nMultipole(), 0);
+    }
+
+    // Targets that are not the sources (a target tree per call)
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<scalar> U(-3, 3);
+    pointField y(3000);
+    forAll(y, i)
+    {
+        y[i] = point(U(rng) + 1.25, U(rng), U(rng));
+    }
+    vectorField Ey, E;
+    scalarField py, ph;
+    bemTreecode::direct(x, qr, y, false, Ey, &py);
+    for (const label p : {3, 6})
+    {
+        const bemFmm f(x, p, theta, 16);
+        f.evaluate(qr, y, false, E, &ph);
+        std::printf
+        (
+            "FMM p %d, other targets: rel. L2 error E %.2e phi %.2e\n", p,
+            relL2(E, Ey), relL2(ph, py)
+        );
+        EXPECT_LT(relL2(E, Ey), std::pow(theta, p + 1));
+        EXPECT_LT(relL2(ph, py), std::pow(theta, p + 1));
+    }
+
+    // The default FMM is at least as accurate as the default treecode
+    const bemSolverControls c;
+    const bemTreecode tc(x, c.theta, c.order, c.leafSize);
+    const bemFmm fm(x, c.fmmOrder, c.fmmTheta, c.fmmLeafSize);
+    vectorField Et, Ef;
+    scalarField pt, pf;
+    tc.evaluate(qs, x, true, Et, &pt);
+    fm.evaluate(qs, x, true, Ef, &pf);
+    std::printf
+    (
+        "defaults, smooth density: treecode E %.2e phi %.2e n.E %.2e;"
+        " FMM E %.2e phi %.2e n.E %.2e\n", relL2(Et, Es), relL2(pt, ps),
+        relL2(scalarField(nrm & Et), nEs), relL2(Ef, Es), relL2(pf, ps),
+        relL2(scalarField(nrm & Ef), nEs)
+    );
+    EXPECT_LT(relL2(Ef, Es), relL2(Et, Es));
+    EXPECT_LT(relL2(pf, ps), relL2(pt, ps));
+    EXPECT_LT
+    (
+        relL2(scalarField(nrm & Ef), nEs), relL2(scalarField(nrm & Et), nEs)
+    );
+    tc.evaluate(qr, x, true, Et, &pt);
+    fm.evaluate(qr, x, true, Ef, &pf);
+    EXPECT_LT(relL2(Ef, Er), relL2(Et, Er));
+}
+
+
+TEST(bemElectrostatics, FmmCostPerPointBounded)
+{
+    // O(N): the interactions per target do not grow with N (the treecode's
+    // multipole interactions per target grow as log N)
+    scalar perTarget[2];
+    const label ns[2] = {1600, 6400};
+    for (label i = 0; i < 2; ++i)
+    {
+        pointField x;
+        vectorField nrm;
+        scalarField qs, qr;
+        labelList group;
+        sphereCharges(2, ns[i], x, nrm, qs, qr, group);
+        const bemSolverControls c;
+        const bemFmm f(x, c.fmmOrder, c.fmmTheta, c.fmmLeafSize);
+        vectorField E;
+        f.evaluate(qr, x, true, E, nullptr);
+        // Weighted as measured: an M2L (p = 5) costs ~90 point pairs
+        perTarget[i] = (f.nDirect() + 90*f.nMultipole())/x.size();
+        std::printf
+        (
+            "FMM N %d: per target %.0f point pairs, %.2f M2L\n",
+            x.size(), f.nDirect()/x.size(), f.nMultipole()/x.size()
+        );
+    }
+    EXPECT_LT(perTarget[1], 1.2*perTarget[0]);
+}
+
+
+TEST(bemElectrostatics, FmmEvaluateOthersExact)
+{
+    // Three spheres (groups 0, 1, 2); charges on sphere 1 only
+    pointField x;
+    vectorField nrm;
+    scalarField qs, qr;
+    labelList group;
+    sphereCharges(3, 800, x, nrm, qs, qr, group);
+    scalarField q(qr);
+    forAll(q, i)
+    {
+        if (group[i] != 1) q[i] = 0;
+    }
+    const bemFmm f(x, 5, 0.5, 16, group);
+    vectorField E, Ed;
+    scalarField ph, pd;
+    f.evaluateOthers(q, E, &ph);
+    bemTreecode::direct(x, q, x, true, Ed, &pd);
+    vectorField E02(E), Ed02(Ed);
+    scalar maxOwn = 0;
+    forAll(x, i)
+    {
+        if (group[i] == 1)
+        {
+            // Exact exclusion: nothing at all from the own sphere
+            maxOwn = max(maxOwn, max(mag(E[i]), mag(ph[i])));
+            E02[i] = Ed02[i] = Zero;
+        }
+    }
+    EXPECT_EQ(maxOwn, 0);
+    const scalar e = relL2(E02, Ed02);
+    std::printf("FMM evaluateOthers: own group %g, others rel. error %.2e\n", maxOwn, e);
+    EXPECT_LT(e, std::pow(0.5, 6));
+
+    // All charges: against a direct sum over the other groups
+    vectorField Eo(x.size(), Zero);
+    forAll(x, i)
+    {
+        forAll(x, j)
+        {
+            if (group[j] == group[i]) continue;
+            const vector d = x[i] - x[j];
+            Eo[i] += qr[j]*d/(4*pi*pow3(mag(d)));
+        }
+    }
+    f.evaluateOthers(qr, E, nullptr);
+    std::printf("FMM evaluateOthers, all charges: rel. error %.2e\n", relL2(E, Eo));
+    EXPECT_LT(relL2(E, Eo), std::pow(0.5, 6));
+}
+
+
+TEST(bemElectrostatics, SolverFmmMatchesDirect)
+{
+    // Two charged spheres kp = 10 (+1/-1), 400 patches each: sigma_b and
+    // forces with the FMM matvec against the direct matvec
+    auto solve = [](const bemSolverControls& c, scalarField& sig, label& it)
+    {
+        bemSolver s(1, c);
+        const label sh = s.shape(vector(1, 1, 1), 400);
+        const scalar A = sum(s.mesh(sh).areas());
+        s.addParticle(sh, point::zero, tensor::I, 10, A);
+        s.addParticle(sh, point(2.5, 0.2, 0), tensor::I, 10, -A);
+        s.solve();
+        EXPECT_TRUE(s.info().converged);
+        sig.setSize(s.nPatches());
+        label k = 0;
+        for (label p = 0; p < 2; ++p)
+        {
+            for (const scalar v : s.sigmaB(p)) sig[k++] = v;
+        }
+        it = s.info().iterations;
+        return s.forces()[1];
+    };
+    bemSolverControls c;
+    c.tolerance = 1e-8;
+    scalarField sd, sf, st;
+    label itd, itf, itt;
+    c.matvec = bemMatvecMethod::direct;
+    const vector Fd = solve(c, sd, itd);
+    c.matvec = bemMatvecMethod::treecode;
+    const vector Ft = solve(c, st, itt);
+    c.matvec = bemMatvecMethod::fmm;
+    const vector Ff = solve(c, sf, itf);
+    std::printf
+    (
+        "solver FMM (p %d) vs direct: sigma_b %.2e, force %.2e, iterations"
+        " %d/%d (treecode: sigma_b %.2e, force %.2e)\n", c.fmmOrder,
+        relL2(sf, sd), mag(Ff - Fd)/mag(Fd), itf, itd, relL2(st, sd),
+        mag(Ft - Fd)/mag(Fd)
+    );
+    EXPECT_EQ(itf, itd);
+    // Default order: at least as close to the direct solution as the
+    // treecode; the force (direct output sums) within the GMRES tolerance
+    EXPECT_LT(relL2(sf, sd), relL2(st, sd));
+    EXPECT_LT(mag(Ff - Fd)/mag(Fd), bemSolverControls().tolerance);
+    // Order 8: sigma_b itself within the GMRES tolerance
+    c.fmmOrder = 8;
+    solve(c, sf, itf);
+    std::printf("solver FMM p 8 vs direct: sigma_b %.2e\n", relL2(sf, sd));
+    EXPECT_LT(relL2(sf, sd), bemSolverControls().tolerance);
+
+    // Forces from the fast sums (evaluateOthers) instead of direct sums
+    c.fmmOrder = bemSolverControls().fmmOrder;
+    c.directOutputMax = 0;
+    const vector Ffo = solve(c, sf, itf);
+    std::printf("solver FMM outputs vs direct: force %.2e\n", mag(Ffo - Fd)/mag(Fd));
+    EXPECT_LT(mag(Ffo - Fd)/mag(Fd), 1e-3);
+}
+
+
+TEST(bemElectrostatics, SolverControlsMatvecKeyword)
+{
+    dictionary d;
+    d.add("matvec", word("fmm"));
+    d.add("fmmOrder", 6);
+    d.add("fmmTheta", 0.4);
+    const bemSolverControls c = bemSolverControls::read(d);
+    EXPECT_TRUE(c.matvec == bemMatvecMethod::fmm);
+    EXPECT_EQ(c.fmmOrder, 6);
+    EXPECT_EQ(c.fmmTheta, 0.4);
+    d.set("matvec", word("multipole"));
+    FatalIOError.throwExceptions();
+    bool thrown = false;
+    try
+    {
+        bemSolverControls::read(d);
+    }
+    catch (const Foam::error& e)
+    {
+        thrown = true;
+        const std::string msg(e.message());
+        std::printf("bad matvec: %s\n", msg.c_str());
+        EXPECT_NE(msg.find("multipole"), std::string::npos);
+        EXPECT_NE(msg.find("direct treecode fmm"), std::string::npos);
+    }
+    FatalIOError.dontThrowExceptions();
+    EXPECT_TRUE(thrown);
 }
 
 
