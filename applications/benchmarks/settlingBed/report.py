@@ -31,7 +31,7 @@ def write_doc(path, res, table, quick=False, regenerated=False):
     add(cmd)
     add("```")
     add("")
-    add(f"(`Allrun` takes about 20-25 min on this machine. `Allrun -quick`, with N = {ph_quick_n()} spheres "
+    add(f"(`Allrun` takes about 8 min on this machine. `Allrun -quick`, with N = {ph_quick_n()} spheres "
         f"and 500 ellipsoids, takes about 3 min; it checks the machinery and writes no doc.)")
     add(f"The results are from `{cmd}` started on {m['date']} (mode `{res['mode']}`, "
         f"total {res['totalSeconds']/60:.1f} min)"
