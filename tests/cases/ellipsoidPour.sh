@@ -1,6 +1,7 @@
 # Fifty ellipsoids (aspect ratio 2, random orientations) falling into a box
 # with Hertz-Mindlin contacts: no particle lost, state finite; a restart
-# (contact histories read back) continues the run exactly; a 2-processor
+# (contact histories and the dissipated energy read back) continues the
+# run exactly; a 2-processor
 # run (contacts across the processor boundary through InteractionLists)
 # reproduces the serial run to round-off growth: 1e-10 at 0.04 s. Contact
 # dynamics is chaotic (round-off doubles every few collisions), so later
@@ -32,6 +33,12 @@ setEndTime 0.08
 run solver2 chargedParticleFoam || fail "ellipsoidPour.secondHalf (solver failed)"
 $PY "$tools/compareClouds.py" "$work/serial/0.08" "$work/restarted/0.08" \
     --tol 1e-12 --name ellipsoidPour.restart
+# The dissipated energy in the log continues across the restart
+lastDissipated() { grep "Contact dissipated energy" "$1" | tail -1 | awk '{print $NF}'; }
+dS=$(lastDissipated "$work/serial/log.solver")
+dR=$(lastDissipated "$work/restarted/log.solver2")
+check ellipsoidPour.restartDissipatedEnergy "(at 0.08 s: $dS J in one run, $dR J restarted)" \
+    $PY -c "import sys; a, b = float('$dS'), float('$dR'); sys.exit(0 if a > 0 and abs(a - b) <= 1e-10*a else 1)"
 
 cd "$work/parallel" || exit 1
 run blockMesh blockMesh

@@ -882,6 +882,17 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         keepAccessedRecords(const_cast<wallList&>(records.wallRecords()));
     }
 
+    // The dissipated energy so far, for a restart (the cloud writes its
+    // output properties after the step)
+    if (this->owner().mesh().time().writeTime())
+    {
+        this->owner().outputProperties().set
+        (
+            "contactDissipatedEnergy",
+            dissipatedEnergy()
+        );
+    }
+
     if (nBufferWarnings_ > 0 && nBufferWarningsTotal_ > 5)
     {
         Info<< "    " << nBufferWarnings_ << " contacts with an overlap beyond"
@@ -947,6 +958,14 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     ),
     nUnconverged_(0),
     dissipatedEnergy_(0),
+    dissipatedEnergy0_
+    (
+        owner.outputProperties().template lookupOrDefault<scalar>
+        (
+            "contactDissipatedEnergy",
+            0
+        )
+    ),
     elasticEnergy_(0),
     parcels_(),
     x_(),
