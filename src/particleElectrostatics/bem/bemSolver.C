@@ -309,11 +309,10 @@ void Foam::bemSolver::assemble()
     }
 
     // Fast sum
-    tree_.reset();
-    fmm_.reset();
+    fastSum_.reset();
     if (ctrl_.matvec == matvecMethod::treecode)
     {
-        tree_.reset
+        fastSum_.reset
         (
             new bemTreecode
             (
@@ -323,7 +322,7 @@ void Foam::bemSolver::assemble()
     }
     else if (ctrl_.matvec == matvecMethod::fmm)
     {
-        fmm_.reset
+        fastSum_.reset
         (
             new bemFmm
             (
@@ -419,13 +418,9 @@ void Foam::bemSolver::fieldOfAll
     scalarField* phi
 ) const
 {
-    if (fmm_)
+    if (fastSum_)
     {
-        fmm_->evaluate(q, x_, true, E, phi);
-    }
-    else if (tree_)
-    {
-        tree_->evaluate(q, x_, true, E, phi);
+        fastSum_->evaluate(q, x_, true, E, phi);
     }
     else
     {
@@ -524,19 +519,12 @@ void Foam::bemSolver::computeOutputs()
     // eps0 E of all other particles' surface charges, eps0 psi of all
     vectorField E(N, Zero);
     scalarField phi(N, Zero);
-    if ((tree_ || fmm_) && N > ctrl_.directOutputMax)
+    if (fastSum_ && N > ctrl_.directOutputMax)
     {
         // Field of the other particles (exact exclusion), potential of all
         vectorField Eall;
         fieldOfAll(q, Eall, &phi);
-        if (fmm_)
-        {
-            fmm_->evaluateOthers(q, E, nullptr);
-        }
-        else
-        {
-            tree_->evaluateOthers(q, E, nullptr);
-        }
+        fastSum_->evaluateOthers(q, E, nullptr);
     }
     else
     {
