@@ -89,4 +89,10 @@ badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
     'Entry logInterval = 0 is out of range: >= 1'
 badCase zeroNeighbourSkin 'maxInteractionDistance +4e-3;' \
     'maxInteractionDistance 4e-3; neighbourSkin 0;' \
-    'Entry neighbourSkin = 0 is out of range: it must be finite and > 0'
+    'Entry neighbourSkin = 0 is out of range \(0, maxInteractionDistance = 0.004\]'
+badCase largeNeighbourSkin 'maxInteractionDistance +4e-3;' \
+    'maxInteractionDistance 4e-3; neighbourSkin 5e-3;' \
+    'Entry neighbourSkin = 0.005 is out of range \(0, maxInteractionDistance = 0.004\]'
+badCase smallInteractionDistance 'maxInteractionDistance +4e-3;' \
+    'maxInteractionDistance 1e-5; neighbourSkin 1e-6;' \
+    'Entry maxInteractionDistance = 1e-05 is too small for parcel'

@@ -46,6 +46,17 @@ void Foam::ChargedCloud<CloudType>::setModels()
         }
         ec->recordContacts();
     }
+
+    // The pairs in contact for the electrostatics (Ruan Eq. 44)
+    if (electrostatics().active() && electrostatics().readsCollisionRecords())
+    {
+        collisionModelType* ec =
+            dynamic_cast<collisionModelType*>(&this->collision());
+        if (ec)
+        {
+            ec->keepCollisionRecords();
+        }
+    }
 }
 
 

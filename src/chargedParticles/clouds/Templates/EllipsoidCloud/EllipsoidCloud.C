@@ -36,10 +36,9 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
     inPlace(parcelType::trackingData::tpVelocityHalfStep);
 
+    // The drift and the rotation (EllipsoidParcel::move)
     td.part() = parcelType::trackingData::tpLinearTrack;
     CloudType::move(cloud, td, deltaT);
-
-    inPlace(parcelType::trackingData::tpRotationalTrack);
 
     this->updateCellOccupancy();
 
@@ -284,17 +283,31 @@ void Foam::EllipsoidCloud<CloudType>::info()
     // rotational energy of spheres, replaced here by the ellipsoids' one
     CloudType::cloudType::info();
 
-    // Contacts from the collision records (current contacts only: the
-    // collision model forgets the records of contacts that ended)
-    scalar nPair = 0, nWall = 0, nParcels = this->size();
-    for (const parcelType& p : *this)
+    // Contacts: counted by ellipsoidCollision (it writes the collision
+    // records only when they are read); other models keep the records of
+    // the current contacts only
+    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
+        ellipsoidCollisionType;
+    const auto* ecPtr =
+        dynamic_cast<const ellipsoidCollisionType*>(&this->collision());
+
+    scalar nPair = 0, nWall = 0;
+    const scalar nParcels = returnReduce(scalar(this->size()), sumOp<scalar>());
+    if (ecPtr)
     {
-        nPair += p.collisionRecords().pairRecords().size();
-        nWall += p.collisionRecords().wallRecords().size();
+        nPair = ecPtr->nPairContactSides();
+        nWall = ecPtr->nWallContacts();
     }
-    reduce(nPair, sumOp<scalar>());
-    reduce(nWall, sumOp<scalar>());
-    reduce(nParcels, sumOp<scalar>());
+    else
+    {
+        for (const parcelType& p : *this)
+        {
+            nPair += p.collisionRecords().pairRecords().size();
+            nWall += p.collisionRecords().wallRecords().size();
+        }
+        reduce(nPair, sumOp<scalar>());
+        reduce(nWall, sumOp<scalar>());
+    }
 
     // Potential energy in gravity, -m g.x
     scalar potential = 0;
@@ -312,10 +325,6 @@ void Foam::EllipsoidCloud<CloudType>::info()
         << "    Coordination number             = "
         << (nParcels > 0 ? nPair/nParcels : 0) << nl;
 
-    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
-        ellipsoidCollisionType;
-    const auto* ecPtr =
-        dynamic_cast<const ellipsoidCollisionType*>(&this->collision());
     if (ecPtr)
     {
         Info<< "    Contact elastic energy          = "

@@ -51,34 +51,25 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     const scalar trackTime
 )
 {
-    if (td.part() == trackingData::tpRotationalTrack)
+    if (td.part() != trackingData::tpLinearTrack)
     {
-        // Drift of the orientation with the kicked angular momentum
-        td.keepParticle = true;
-        td.switchProcessor = false;
-
-        if (this->angularMomentum() != vector::zero)
-        {
-            rigidBodyRotation::freeRotation
-            (
-                orientation_,
-                this->angularMomentum(),
-                principalMoments(),
-                trackTime
-            );
-        }
-        return td.keepParticle;
+        return ParcelType::move(cloud, td, trackTime);
     }
 
-    if
-    (
-        td.part() == trackingData::tpLinearTrack
-     && cloud.trackingTolerance() > 0
-     && this->active()
-    )
+    // The drift (lazy or tracked), then the rotation of the orientation
+    // with the kicked angular momentum, in the same pass over the cloud:
+    // once, where the move ends (in parallel Cloud::move calls move again
+    // for every parcel, finished or not, until no parcel changes
+    // processor)
+    const bool unfinished = this->stepFraction() < 1;
+    if (cloud.trackingTolerance() > 0 && this->active())
     {
         if (driftInCell(cloud, td, trackTime))
         {
+            if (unfinished && td.keepParticle)
+            {
+                rotate(trackTime);
+            }
             return td.keepParticle;
         }
         // The rest of the step is tracked, starting with the drift
@@ -86,12 +77,29 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     }
 
     const bool keep = ParcelType::move(cloud, td, trackTime);
-    if (td.part() == trackingData::tpLinearTrack)
+    centreValid_ = false;
+    allowedDrift_ = -1;
+    if (unfinished && keep && !td.switchProcessor)
     {
-        centreValid_ = false;
-        allowedDrift_ = -1;
+        rotate(trackTime);
     }
     return keep;
+}
+
+
+template<class ParcelType>
+void Foam::EllipsoidParcel<ParcelType>::rotate(const scalar dt)
+{
+    if (this->angularMomentum() != vector::zero)
+    {
+        rigidBodyRotation::freeRotation
+        (
+            orientation_,
+            this->angularMomentum(),
+            principalMoments(),
+            dt
+        );
+    }
 }
 
 

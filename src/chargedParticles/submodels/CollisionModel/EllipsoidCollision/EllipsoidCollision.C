@@ -270,7 +270,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     const scalar energyWeight
 )
 {
-    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const scalar dt = deltaT_;
 
     const vector& n = c.n;
     const scalar delta = c.overlap;
@@ -365,7 +365,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
 
     // Ai et al. (2011) model A, limited so that w is not reversed: a
     // half kick dt/2 M/I must not exceed |w| (both kicks of a step)
-    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const scalar dt = deltaT_;
     const scalar Fn = mag(F & c.n);
     const scalar Mmag = min(law.muR*c.reducedRadius*Fn, Ieff*wMag/dt);
 
@@ -376,28 +376,52 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
 
 
 template<class CloudType>
+typename Foam::EllipsoidCollision<CloudType>::contactBody
+Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
+{
+    const scalar dBl = bufferLayer(p);
+    return contactBody
+    {
+        &p,
+        p.U(),
+        p.omega(),
+        p.mass(),
+        cmptMax(p.semiAxes()) + dBl,
+        dBl,
+        p.isSphere()
+    };
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::preInteraction()
 {
     nBufferWarnings_ = 0;
     elasticEnergy_ = 0;
     nUnconverged_ = 0;
+    nPairSides_ = 0;
+    nWallContacts_ = 0;
     contacts_.clear();
+    deltaT_ = this->owner().mesh().time().deltaTValue();
 
-    // Positions and angular velocities of the parcels, once per collide
+    // The contact bodies, once per collide (the barycentric-to-Cartesian
+    // conversion and omega from L are the costly parts)
     parcels_.clear();
     x_.clear();
-    omega_.clear();
+    bodies_.clear();
     for (parcelType& p : this->owner())
     {
-        p.f() = Zero;
-        p.torque() = Zero;
         parcels_.append(&p);
         x_.append(p.centre());
-        omega_.append(p.omega());
+        bodies_.append(body(p));
     }
+    force_.setSize(parcels_.size());
+    torque_.setSize(parcels_.size());
+    force_ = vector::zero;
+    torque_ = vector::zero;
 
-    // The same for the parcels of cells with referred neighbours (other
-    // processors, cyclics)
+    // The positions of the parcels of cells with referred neighbours
+    // (other processors, cyclics)
     if (referring())
     {
         const List<DynamicList<parcelType*>>& cellOccupancy =
@@ -456,17 +480,52 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
 {
     ++nListBuilds_;
     const label n = parcels_.size();
+
+    // Index of every parcel in the previous list (-1: new to the list),
+    // for the contact histories
+    labelList oldIndex(n, -1);
+    {
+        HashTable<label, labelPair, Hash<labelPair>> oldOf;
+        forAll(parcels_, i)
+        {
+            const labelPair id(parcels_[i]->origProc(), parcels_[i]->origId());
+            if (i < listIds_.size() && listIds_[i] == id)
+            {
+                oldIndex[i] = i;
+                continue;
+            }
+            if (oldOf.empty())
+            {
+                forAll(listIds_, k)
+                {
+                    oldOf.insert(listIds_[k], k);
+                }
+            }
+            const auto iter = oldOf.cfind(id);
+            if (iter.found())
+            {
+                oldIndex[i] = iter.val();
+            }
+        }
+    }
+    labelList oldStart;
+    oldStart.transfer(listStart_);
+    labelList oldPartners;
+    oldPartners.transfer(listPartners_);
+    List<vector> oldXi;
+    oldXi.transfer(listXi_);
+    List<char> oldTouching;
+    oldTouching.transfer(listTouching_);
+
     listParcels_ = parcels_;
     listX_ = x_;
     listIds_.setSize(n);
-    scalarField r(n);
     scalar rMax = 0;
     forAll(parcels_, i)
     {
         const parcelType& p = *parcels_[i];
         listIds_[i] = labelPair(p.origProc(), p.origId());
-        r[i] = cmptMax(p.semiAxes()) + bufferLayer(p);
-        rMax = max(rMax, r[i]);
+        rMax = max(rMax, bodies_[i].radius);
     }
 
     // Partners j > i of each i; the cell list visits the targets i in
@@ -483,7 +542,11 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
             x_, x_, 2*rMax + skin_, 0,
             [&](const label i, const label j, const vector&, const scalar d2)
             {
-                if (j > i && d2 < sqr(r[i] + r[j] + skin_))
+                if
+                (
+                    j > i
+                 && d2 < sqr(bodies_[i].radius + bodies_[j].radius + skin_)
+                )
                 {
                     while (row < i)
                     {
@@ -506,33 +569,196 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
             listPartners_.begin() + listStart_[i + 1]
         );
     }
+
+    carryHistories(oldStart, oldPartners, oldXi, oldTouching, oldIndex);
+
+    // Wall faces in reach: those of the interaction list of the parcel's
+    // cell whose bounding box comes within r + skin. Complete while the
+    // parcel stays within skin/2 of x_ (the list is rebuilt otherwise):
+    // the list of a cell holds the faces whose boxes come within
+    // maxInteractionDistance of the cell's box (InteractionLists), and
+    // r + skin/2 <= maxInteractionDistance
+    const polyMesh& mesh = this->owner().mesh();
+    if (wallFaceBb_.size() != mesh.nBoundaryFaces())
+    {
+        // (the mesh is static)
+        wallFaceBb_.setSize(mesh.nBoundaryFaces());
+        forAll(wallFaceBb_, bFacei)
+        {
+            wallFaceBb_[bFacei] = boundBox
+            (
+                mesh.points(),
+                mesh.faces()[mesh.nInternalFaces() + bFacei],
+                false
+            );
+        }
+    }
+    const labelListList& directWallFaces = il_.dwfil();
+    wallStart_.setSize(n + 1);
+    wallStart_[0] = 0;
+    wallFaces_.clear();
+    wallParcels_.clear();
+    forAll(parcels_, i)
+    {
+        parcelType& p = *parcels_[i];
+        const scalar r = bodies_[i].radius;
+        if (r + 0.5*skin_ > maxDistance_)
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "Entry maxInteractionDistance = "
+                << Foam::name(maxDistance_)
+                << " is too small for parcel (origProc " << p.origProc()
+                << ", origId " << p.origId() << ") with the bounding radius "
+                << Foam::name(r) << " m of its collision shell: it must be"
+                << " >= the radius + neighbourSkin/2 = "
+                << Foam::name(r + 0.5*skin_) << exit(FatalIOError);
+        }
+        const point& x = x_[i];
+        for (const label facei : directWallFaces[p.cell()])
+        {
+            const boundBox& bb = wallFaceBb_[facei - mesh.nInternalFaces()];
+            if (magSqr(x - bb.nearest(x)) < sqr(r + skin_))
+            {
+                wallFaces_.append(facei);
+            }
+        }
+        wallStart_[i + 1] = wallFaces_.size();
+        if (wallStart_[i + 1] > wallStart_[i])
+        {
+            wallParcels_.append(i);
+        }
+        else if (!referring())
+        {
+            // No wall in reach: a wall contact of the last step has
+            // ended (in parallel all records are renewed every step)
+            const auto& records = p.collisionRecords().wallRecords();
+            typedef typename std::decay<decltype(records)>::type wallList;
+            const_cast<wallList&>(records).clear();
+        }
+    }
 }
 
 
 template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::evaluatePair
+void Foam::EllipsoidCollision<CloudType>::carryHistories
 (
-    parcelType& pA,
-    const point& xA,
-    const vector& wA,
-    parcelType& pB,
-    const point& xB,
-    const vector& wB,
-    const bool referred
+    const labelList& oldStart,
+    const labelList& oldPartners,
+    const List<vector>& oldXi,
+    const List<char>& oldTouching,
+    const labelList& oldIndex
 )
 {
-    // A contact with a referred parcel is also evaluated on the referred
-    // parcel's processor: half of its energy is booked here
-    const scalar energyWeight = referred ? 0.5 : 1;
+    // The history of pair (A, B) from the records of A, if A has one
+    auto fromRecords =
+        [](const parcelType& pA, const parcelType& pB, vector& xi)
+        {
+            for (const auto& record : pA.collisionRecords().pairRecords())
+            {
+                if
+                (
+                    record.origProcOfOther() == pB.origProc()
+                 && record.origIdOfOther() == pB.origId()
+                )
+                {
+                    xi = record.collisionData();
+                    return true;
+                }
+            }
+            return false;
+        };
 
-    // Bounding spheres of the collision shells
-    const scalar rA = cmptMax(pA.semiAxes()) + bufferLayer(pA);
-    const scalar rB = cmptMax(pB.semiAxes()) + bufferLayer(pB);
-    if (magSqr(xA - xB) > sqr(rA + rB))
+    // In parallel and with cyclics the records are written every step
+    const bool recordsCurrent = referring() || keepRecords_;
+
+    listXi_.setSize(listPartners_.size());
+    listTouching_.setSize(listPartners_.size());
+    forAll(parcels_, i)
     {
-        return;
-    }
+        const label oi = oldIndex[i];
+        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
+        {
+            const label j = listPartners_[k];
+            const label oj = oldIndex[j];
+            vector xi(Zero);
+            bool touching = false;
+            bool found = false;
 
+            // In the previous list (rows hold the partners of higher index)
+            if (oi >= 0 && oj >= 0)
+            {
+                const label a = min(oi, oj);
+                const label b = max(oi, oj);
+                for (label m = oldStart[a]; m < oldStart[a + 1]; ++m)
+                {
+                    if (oldPartners[m] == b)
+                    {
+                        found = true;
+                        touching = oldTouching[m];
+                        xi = a == oi ? oldXi[m] : -oldXi[m];
+                        break;
+                    }
+                }
+            }
+
+            // Otherwise from the records of a parcel new to the list (read
+            // on restart, injected or transferred: its records are
+            // current); a pair of two old parcels missing from the list
+            // was not within the skin, not in contact
+            if (!found && (oi < 0 || recordsCurrent))
+            {
+                touching = fromRecords(*parcels_[i], *parcels_[j], xi);
+            }
+            else if (!found && oj < 0)
+            {
+                touching = fromRecords(*parcels_[j], *parcels_[i], xi);
+                xi = -xi;
+            }
+            listXi_[k] = touching ? xi : vector(Zero);
+            listTouching_[k] = touching;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::writePairRecords()
+{
+    forAll(parcels_, i)
+    {
+        parcelType& pA = *parcels_[i];
+        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
+        {
+            if (listTouching_[k])
+            {
+                parcelType& pB = *parcels_[listPartners_[k]];
+                pA.collisionRecords().matchPairRecord
+                (
+                    pB.origProc(),
+                    pB.origId()
+                ).collisionData() = listXi_[k];
+                pB.collisionRecords().matchPairRecord
+                (
+                    pA.origProc(),
+                    pA.origId()
+                ).collisionData() = -listXi_[k];
+            }
+        }
+    }
+}
+
+
+template<class CloudType>
+Foam::ellipsoidContact::result
+Foam::EllipsoidCollision<CloudType>::pairGeometry
+(
+    const contactBody& A,
+    const point& xA,
+    const contactBody& B,
+    const point& xB,
+    const bool referred
+) const
+{
     // A referred pair is evaluated on both processors: in one canonical
     // order (lower origProc, origId first), so both solve the same contact
     // problem (the referred copy's position may still differ at round-off;
@@ -540,31 +766,45 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
     const bool swapped =
         referred
      && (
-            pA.origProc() > pB.origProc()
-         || (pA.origProc() == pB.origProc() && pA.origId() > pB.origId())
+            A.p->origProc() > B.p->origProc()
+         || (A.p->origProc() == B.p->origProc() && A.p->origId() > B.p->origId())
         );
-    parcelType& p1 = swapped ? pB : pA;
-    parcelType& p2 = swapped ? pA : pB;
+    const contactBody& b1 = swapped ? B : A;
+    const contactBody& b2 = swapped ? A : B;
     const point& x1 = swapped ? xB : xA;
     const point& x2 = swapped ? xA : xB;
-    const scalar r1 = swapped ? rB : rA;
-    const scalar r2 = swapped ? rA : rB;
 
     // Two spheres: the analytic fast path, without ellipsoid objects
     ellipsoidContact::result c =
-        p1.isSphere() && p2.isSphere()
-      ? ellipsoidContact::sphereSphere(x1, r1, x2, r2)
-      : ellipsoidContact::contact(shell(p1, x1), shell(p2, x2), method_);
+        b1.sphere && b2.sphere
+      ? ellipsoidContact::sphereSphere(x1, b1.radius, x2, b2.radius)
+      : ellipsoidContact::contact(shell(*b1.p, x1), shell(*b2.p, x2), method_);
     if (swapped)
     {
         std::swap(c.x1, c.x2);
         c.n = -c.n;
     }
+    return c;
+}
 
-    if (!c.contact || c.overlap <= 0)
-    {
-        return;
-    }
+
+template<class CloudType>
+Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
+(
+    const ellipsoidContact::result& c,
+    const contactBody& A,
+    const point& xA,
+    const contactBody& B,
+    const point& xB,
+    vector& xi,
+    const bool referred,
+    vector& torqueA,
+    vector& torqueB
+)
+{
+    // A contact with a referred parcel is also evaluated on the referred
+    // parcel's processor: half of its energy is booked here
+    const scalar energyWeight = referred ? 0.5 : 1;
 
     if (!c.converged)
     {
@@ -573,62 +813,47 @@ void Foam::EllipsoidCollision<CloudType>::evaluatePair
 
     if (recordContacts_)
     {
-        contacts_.append({&pA, &pB, xA, xB, c, rA, -1, referred});
+        contacts_.append({A.p, B.p, xA, xB, c, A.radius, -1, referred});
     }
 
     // Contact point: the midpoint (exact angular momentum balance)
     const point xc = 0.5*(c.x1 + c.x2);
     const vector vRel =
-        pointVelocity(pA.U(), wA, xA, xc) - pointVelocity(pB.U(), wB, xB, xc);
-    const scalar mStar = pA.mass()*pB.mass()/(pA.mass() + pB.mass());
+        pointVelocity(A.U, A.omega, xA, xc)
+      - pointVelocity(B.U, B.omega, xB, xc);
+    const scalar mStar = A.mass*B.mass/(A.mass + B.mass);
 
-    vector& xiAB =
-        pA.collisionRecords().matchPairRecord
+    const vector F = contactForce(c, vRel, mStar, pp_, xi, energyWeight);
+
+    const scalar twoDeltaBl = A.deltaBl + B.deltaBl;
+    if (twoDeltaBl > 0 && c.overlap > 0.5*twoDeltaBl)
+    {
+        checkBufferLayer
         (
-            pB.origProc(),
-            pB.origId()
-        ).collisionData();
-    vector& xiBA =
-        pB.collisionRecords().matchPairRecord
-        (
-            pA.origProc(),
-            pA.origId()
-        ).collisionData();
-
-    const vector F = contactForce(c, vRel, mStar, pp_, xiAB, energyWeight);
-    xiBA = -xiAB;
-
-    checkBufferLayer
-    (
-        pA,
-        &pB,
-        c.overlap,
-        bufferLayer(pA) + bufferLayer(pB),
-        vRel & c.n,
-        mStar,
-        c.reducedRadius
-    );
+            *A.p, B.p, c.overlap, twoDeltaBl, vRel & c.n, mStar,
+            c.reducedRadius
+        );
+    }
 
     // Rolling friction, limited by the smaller rotational inertia
     const vector Mr =
         pp_.muR > 0
       ? rollingTorque
         (
-            c, F, wA - wB,
+            c, F, A.omega - B.omega,
             min
             (
-                cmptMin(pA.principalMoments()),
-                cmptMin(pB.principalMoments())
+                cmptMin(A.p->principalMoments()),
+                cmptMin(B.p->principalMoments())
             ),
             pp_, energyWeight
         )
       : Zero;
 
-    // Forces and torques about the centroids (Ruan Eq. 40)
-    pA.f() += F;
-    pB.f() -= F;
-    pA.torque() += ((xc - xA) ^ F) + Mr;
-    pB.torque() -= ((xc - xB) ^ F) + Mr;
+    // Torques about the centroids (Ruan Eq. 40)
+    torqueA += ((xc - xA) ^ F) + Mr;
+    torqueB -= ((xc - xB) ^ F) + Mr;
+    return F;
 }
 
 
@@ -637,13 +862,41 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
 {
     forAll(parcels_, i)
     {
-        parcelType& pA = *parcels_[i];
+        const contactBody& A = bodies_[i];
         const point& xA = x_[i];
-        const vector& wA = omega_[i];
         for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
         {
             const label j = listPartners_[k];
-            evaluatePair(pA, xA, wA, *parcels_[j], x_[j], omega_[j]);
+            const contactBody& B = bodies_[j];
+            const point& xB = x_[j];
+
+            // Bounding spheres of the collision shells, then the contact
+            if (magSqr(xA - xB) > sqr(A.radius + B.radius))
+            {
+                listTouching_[k] = false;
+                continue;
+            }
+            const ellipsoidContact::result c =
+                pairGeometry(A, xA, B, xB, false);
+            if (!c.contact || c.overlap <= 0)
+            {
+                listTouching_[k] = false;
+                continue;
+            }
+
+            // A new contact starts its tangential history
+            vector& xi = listXi_[k];
+            if (!listTouching_[k])
+            {
+                xi = Zero;
+                listTouching_[k] = true;
+            }
+            nPairSides_ += 2;
+
+            const vector F =
+                pairForce(c, A, xA, B, xB, xi, false, torque_[i], torque_[j]);
+            force_[i] += F;
+            force_[j] -= F;
         }
     }
 }
@@ -662,18 +915,42 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
         for (parcelType& referred : referredParticles[refCelli])
         {
             const point xR = referred.centre();
-            const vector wR = referred.omega();
+            const contactBody R = body(referred);
             for (const label realCelli : ril[refCelli])
             {
                 const DynamicList<parcelType*>& cell = cellOccupancy[realCelli];
                 forAll(cell, k)
                 {
-                    evaluatePair
-                    (
-                        *cell[k], cellPositions_[realCelli][k],
-                        cell[k]->omega(),
-                        referred, xR, wR, true
-                    );
+                    parcelType& pA = *cell[k];
+                    const point& xA = cellPositions_[realCelli][k];
+                    const scalar rA = cmptMax(pA.semiAxes()) + bufferLayer(pA);
+                    if (magSqr(xA - xR) > sqr(rA + R.radius))
+                    {
+                        continue;
+                    }
+                    const contactBody A = body(pA);
+                    const ellipsoidContact::result c =
+                        pairGeometry(A, xA, R, xR, true);
+                    if (!c.contact || c.overlap <= 0)
+                    {
+                        continue;
+                    }
+                    ++nPairSides_;
+
+                    // The history on the real parcel's side (the referred
+                    // parcel's processor keeps the other)
+                    vector& xi =
+                        pA.collisionRecords().matchPairRecord
+                        (
+                            referred.origProc(),
+                            referred.origId()
+                        ).collisionData();
+                    vector torqueR(Zero);
+                    pA.f() +=
+                        pairForce
+                        (
+                            c, A, xA, R, xR, xi, true, pA.torque(), torqueR
+                        );
                 }
             }
         }
@@ -685,169 +962,156 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 {
     const polyMesh& mesh = this->owner().mesh();
-    const labelListList& directWallFaces = il_.dwfil();
-
-    // Bounding boxes of the boundary faces (the mesh is static)
-    if (wallFaceBb_.size() != mesh.nBoundaryFaces())
-    {
-        wallFaceBb_.setSize(mesh.nBoundaryFaces());
-        forAll(wallFaceBb_, bFacei)
-        {
-            wallFaceBb_[bFacei] = boundBox
-            (
-                mesh.points(),
-                mesh.faces()[mesh.nInternalFaces() + bFacei],
-                false
-            );
-        }
-    }
     const labelListList& referredWallFaces = il_.rwfilInverse();
 
     // Contacts of one parcel (contact points on the walls) to keep
     // coplanar neighbour faces from counting one contact twice
     DynamicList<point> contactPoints;
 
-    forAll(parcels_, i)
+    // Parcel i against a wall face: its points, centre, unit normal out of
+    // the domain, area, bounding box and patch
+    auto wallFace =
+    [&]
+    (
+        const label i,
+        std::unique_ptr<const ellipsoid>& ePtr,
+        const face& f,
+        const pointField& pts,
+        const point& fc,
+        const vector& nOutOfDomain,
+        const scalar faceArea,
+        const boundBox& bb,
+        const label patchi
+    )
     {
-        parcelType& p = *parcels_[i];
-        const label celli = p.cell();
+        const contactBody& b = bodies_[i];
+        const point& xp = x_[i];
+        const scalar r = b.radius;
+
+        // The face's plane or its bounding box out of reach of the shell's
+        // bounding sphere: no contact (cheap tests before any geometry;
+        // the box test drops the coplanar neighbours of the face in
+        // contact)
+        const scalar h = (xp - fc) & nOutOfDomain;
+        if (h <= -r || h >= r)
+        {
+            return;
+        }
+        if (magSqr(xp - bb.nearest(xp)) >= sqr(r))
+        {
+            return;
+        }
+
+        // The collision shell, made for the first face in reach
+        if (!b.sphere && !ePtr)
+        {
+            ePtr.reset(new ellipsoid(shell(*b.p, xp)));
+        }
+        const ellipsoidContact::result c =
+            b.sphere
+          ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
+          : ellipsoidContact::ellipsoidPlane(*ePtr, fc, -nOutOfDomain);
+        if (!c.contact || c.overlap <= 0)
+        {
+            return;
+        }
+
+        // The contact belongs to this face if its plane point lies on the
+        // face (within round-off of the face size) (bounding box first:
+        // most coplanar neighbours fail it)
+        const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
         if
         (
-            directWallFaces[celli].empty()
-         && referredWallFaces[celli].empty()
+            cmptMin(c.x2 - bb.min()) < -tol
+         || cmptMax(c.x2 - bb.max()) > tol
         )
         {
-            continue;
+            return;
         }
+        if (f.nearestPoint(c.x2, pts).distance() > tol)
         {
-            const point& xp = x_[i];
-            const vector& wp = omega_[i];
-            const bool sphere = p.isSphere();
-            const scalar r = cmptMax(p.semiAxes()) + bufferLayer(p);
-            // The collision shell, made for the first face in reach
-            std::unique_ptr<const ellipsoid> ePtr;
-            contactPoints.clear();
-
-            // face, its points, centre, unit normal out of the domain, patch
-            auto wallFace =
-            [&]
-            (
-                const face& f,
-                const pointField& pts,
-                const point& fc,
-                const vector& nOutOfDomain,
-                const scalar faceArea,
-                const boundBox& bb,
-                const label patchi
-            )
+            return;
+        }
+        for (const point& x : contactPoints)
+        {
+            if (magSqr(x - c.x2) < sqr(1e-6*r))
             {
-                // The face's plane or its bounding box out of reach of the
-                // shell's bounding sphere: no contact (cheap tests before
-                // any geometry; the box test drops the coplanar neighbours
-                // of the face in contact)
-                const scalar h = (xp - fc) & nOutOfDomain;
-                if (h <= -r || h >= r)
-                {
-                    return;
-                }
-                if (magSqr(xp - bb.nearest(xp)) >= sqr(r))
-                {
-                    return;
-                }
-
-                if (!sphere && !ePtr)
-                {
-                    ePtr.reset(new ellipsoid(shell(p, xp)));
-                }
-                const ellipsoidContact::result c =
-                    sphere
-                  ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
-                  : ellipsoidContact::ellipsoidPlane(*ePtr, fc, -nOutOfDomain);
-                if (!c.contact || c.overlap <= 0)
-                {
-                    return;
-                }
-
-                // The contact belongs to this face if its plane point lies
-                // on the face (within round-off of the face size)
-                // (bounding box first: most coplanar neighbours fail it)
-                const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
-                if
-                (
-                    cmptMin(c.x2 - bb.min()) < -tol
-                 || cmptMax(c.x2 - bb.max()) > tol
-                )
-                {
-                    return;
-                }
-                if (f.nearestPoint(c.x2, pts).distance() > tol)
-                {
-                    return;
-                }
-                for (const point& x : contactPoints)
-                {
-                    if (magSqr(x - c.x2) < sqr(1e-6*r))
-                    {
-                        return;
-                    }
-                }
-                contactPoints.append(c.x2);
-
-                if (recordContacts_)
-                {
-                    contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false});
-                }
-
-                const point xc = 0.5*(c.x1 + c.x2);
-                const vector vRel = pointVelocity(p.U(), wp, xp, xc);
-                vector& xi =
-                    p.collisionRecords().matchWallRecord
-                    (
-                        xc - xp,
-                        r
-                    ).collisionData();
-
-                const vector F = contactForce(c, vRel, p.mass(), pw_, xi);
-                const vector Mr =
-                    pw_.muR > 0
-                  ? rollingTorque
-                    (
-                        c, F, wp, cmptMin(p.principalMoments()), pw_
-                    )
-                  : Zero;
-                checkBufferLayer
-                (
-                    p, nullptr, c.overlap, bufferLayer(p),
-                    vRel & c.n, p.mass(), c.reducedRadius
-                );
-                p.f() += F;
-                p.torque() += ((xc - xp) ^ F) + Mr;
-            };
-
-            // Mesh face centres and areas are cached by the mesh
-            for (const label facei : directWallFaces[celli])
-            {
-                const vector& Sf = mesh.faceAreas()[facei];
-                const scalar magSf = mag(Sf);
-                wallFace
-                (
-                    mesh.faces()[facei],
-                    mesh.points(),
-                    mesh.faceCentres()[facei],
-                    Sf/magSf,
-                    magSf,
-                    wallFaceBb_[facei - mesh.nInternalFaces()],
-                    // The patch only for the listed contacts (a search)
-                    recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
-                );
+                return;
             }
+        }
+        contactPoints.append(c.x2);
+        ++nWallContacts_;
 
-            for (const label rwfi : referredWallFaces[celli])
+        parcelType& p = *b.p;
+        if (recordContacts_)
+        {
+            contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false});
+        }
+
+        const point xc = 0.5*(c.x1 + c.x2);
+        const vector vRel = pointVelocity(b.U, b.omega, xp, xc);
+        vector& xi =
+            p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
+
+        const vector F = contactForce(c, vRel, b.mass, pw_, xi);
+        const vector Mr =
+            pw_.muR > 0
+          ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), pw_)
+          : Zero;
+        if (b.deltaBl > 0 && c.overlap > 0.5*b.deltaBl)
+        {
+            checkBufferLayer
+            (
+                p, nullptr, c.overlap, b.deltaBl, vRel & c.n, b.mass,
+                c.reducedRadius
+            );
+        }
+        force_[i] += F;
+        torque_[i] += ((xc - xp) ^ F) + Mr;
+    };
+
+    // Parcels with wall faces in reach (all parcels when some have
+    // referred wall faces: the faces across processors and cyclics are
+    // found per step from the interaction lists)
+    const bool allParcels = referring();
+    const label nLoop = allParcels ? parcels_.size() : wallParcels_.size();
+    for (label m = 0; m < nLoop; ++m)
+    {
+        const label i = allParcels ? m : wallParcels_[m];
+        std::unique_ptr<const ellipsoid> ePtr;
+        contactPoints.clear();
+
+        // Mesh face centres and areas are cached by the mesh
+        for (label k = wallStart_[i]; k < wallStart_[i + 1]; ++k)
+        {
+            const label facei = wallFaces_[k];
+            const vector& Sf = mesh.faceAreas()[facei];
+            const scalar magSf = mag(Sf);
+            wallFace
+            (
+                i,
+                ePtr,
+                mesh.faces()[facei],
+                mesh.points(),
+                mesh.faceCentres()[facei],
+                Sf/magSf,
+                magSf,
+                wallFaceBb_[facei - mesh.nInternalFaces()],
+                // The patch only for the listed contacts (a search)
+                recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
+            );
+        }
+
+        if (allParcels)
+        {
+            for (const label rwfi : referredWallFaces[parcels_[i]->cell()])
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
                 const pointField& pts = rwf.points();
                 wallFace
                 (
+                    i,
+                    ePtr,
                     rwf,
                     pts,
                     rwf.centre(pts),
@@ -863,6 +1127,18 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
 
 template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::scatterForces()
+{
+    forAll(parcels_, i)
+    {
+        parcelType& p = *parcels_[i];
+        p.f() = force_[i];
+        p.torque() = torque_[i];
+    }
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::postInteraction()
 {
     // Forget the history of contacts that ended: what
@@ -871,20 +1147,45 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
     // allocations each, 6 % of a settled bed of spheres). The lists
     // belong to the (non-const) parcels; CollisionRecordList only has
     // const accessors.
-    for (parcelType* p : parcels_)
+    auto compact = [](parcelType& p, const bool pairs)
     {
-        auto& records = p->collisionRecords();
+        auto& records = p.collisionRecords();
         typedef typename std::decay<decltype(records.pairRecords())>::type
             pairList;
         typedef typename std::decay<decltype(records.wallRecords())>::type
             wallList;
-        keepAccessedRecords(const_cast<pairList&>(records.pairRecords()));
+        if (pairs)
+        {
+            keepAccessedRecords(const_cast<pairList&>(records.pairRecords()));
+        }
         keepAccessedRecords(const_cast<wallList&>(records.wallRecords()));
+    };
+
+    // The pair histories live in the neighbour list. The parcels' records
+    // are written when they are read: every step in parallel and with
+    // cyclics (parcels change processor, referred pairs use the records)
+    // or when a submodel asks for them, otherwise at write time (restart)
+    const bool writeTime = this->owner().mesh().time().writeTime();
+    if (referring() || keepRecords_ || writeTime)
+    {
+        writePairRecords();
+        for (parcelType* p : parcels_)
+        {
+            compact(*p, true);
+        }
+    }
+    else
+    {
+        // Wall records: only parcels with walls in reach have any
+        for (const label i : wallParcels_)
+        {
+            compact(*parcels_[i], false);
+        }
     }
 
     // The dissipated energy so far, for a restart (the cloud writes its
     // output properties after the step)
-    if (this->owner().mesh().time().writeTime())
+    if (writeTime)
     {
         this->owner().outputProperties().set
         (
@@ -969,7 +1270,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     elasticEnergy_(0),
     parcels_(),
     x_(),
-    omega_(),
+    bodies_(),
+    force_(),
+    torque_(),
+    deltaT_(owner.mesh().time().deltaTValue()),
     skin_
     (
         this->coeffDict().template lookupOrDefault<scalar>
@@ -978,12 +1282,21 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             0.25*readPositive(this->coeffDict(), "maxInteractionDistance")
         )
     ),
+    maxDistance_(readPositive(this->coeffDict(), "maxInteractionDistance")),
     listParcels_(),
     listIds_(),
     listX_(),
     listStart_(),
     listPartners_(),
     nListBuilds_(0),
+    listXi_(),
+    listTouching_(),
+    keepRecords_(false),
+    wallStart_(),
+    wallFaces_(),
+    wallParcels_(),
+    nPairSides_(0),
+    nWallContacts_(0),
     cellPositions_(),
     wallFaceBb_(),
     recordContacts_(false),
@@ -1068,12 +1381,15 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             << exit(FatalIOError);
     }
 
-    if (!(skin_ > 0) || !std::isfinite(skin_))
+    // The wall faces in reach are taken from the interaction list of the
+    // parcel's cell at the list build: complete while the parcel stays
+    // within skin/2 of its position then (see buildNeighbourList)
+    if (!(skin_ > 0) || !(skin_ <= maxDistance_))
     {
         FatalIOErrorInFunction(coeffs)
-            << "Entry neighbourSkin = " << skin_
-            << " is out of range: it must be finite and > 0"
-            << exit(FatalIOError);
+            << "Entry neighbourSkin = " << Foam::name(skin_)
+            << " is out of range (0, maxInteractionDistance = "
+            << Foam::name(maxDistance_) << "]" << exit(FatalIOError);
     }
 
     if (resolutionSteps_ < 1)
@@ -1178,21 +1494,26 @@ void Foam::EllipsoidCollision<CloudType>::collide()
 {
     preInteraction();
 
+    // Real pairs and walls on the contact bodies, then the parcels
+    // referred from other processors or across cyclics on the parcels
     if (referring())
     {
         PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
         const label startOfRequests = Pstream::nRequests();
         il_.sendReferredData(this->owner().cellOccupancy(), pBufs);
         realRealInteraction();
+        wallInteraction();
+        scatterForces();
         il_.receiveReferredData(pBufs, startOfRequests);
         realReferredInteraction();
     }
     else
     {
         realRealInteraction();
+        wallInteraction();
+        scatterForces();
     }
 
-    wallInteraction();
     postInteraction();
 }
 
