@@ -16,7 +16,7 @@ here="$PWD"
 root="$(cd ../../.. && pwd -P)"
 mode="${1:-full}"
 steps="${2:-300}"
-src="$here/runs/$mode/spheres/cfSpheres"
+src="$here/runs/$mode/spheres/cfSpheres.1"   # the first of the repeated runs
 [ -d "$src" ] || { echo "profile.sh: $src missing: run Allrun (-quick for quick) first" 1>&2; exit 1; }
 command -v perf >/dev/null || { echo "profile.sh: perf not found (apt-get install linux-perf)" 1>&2; exit 1; }
 if [ -z "$CHARGEDFOAM_DIR" ] || [ "$CHARGEDFOAM_DIR" != "$root" ]

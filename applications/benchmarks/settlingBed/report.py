@@ -50,7 +50,7 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         cf, lg = codes["cfSpheres"], codes["liggghts"]
         best = min((c for c in ("cfPairCollision", "ofIco") if c in codes), key=lambda c: 1/codes[c]["rate"],
                    default=None)
-        add(f"**chargedFoam spheres: {1e6/cf['rate']:.3g} us per particle-step, {lg['rate']/cf['rate']:.0f} "
+        add(f"**chargedFoam spheres: {1e6/cf['rate']:.3g} us per particle-step, {lg['rate']/cf['rate']:.1f} "
             f"times LIGGGHTS' {1e6/lg['rate']:.2g} us** (goal: at most 2 times)."
             + (f" OpenFOAM's own sphere DEM on the same mesh: {1e6/codes[best]['rate']:.3g} us "
                f"({lg['rate']/codes[best]['rate']:.0f} times LIGGGHTS)." if best else ""))
@@ -165,10 +165,12 @@ def write_doc(path, res, table, quick=False, regenerated=False):
     add("  2 cores were seen), which inflates wall times, so the LIGGGHTS loop is timed as process CPU")
     add("  time: the window run minus the same input run with 0 steps. Its own `Loop time` is in the")
     add("  wall column.")
-    reps = codes.get("liggghts", {}).get("repeats", [])
-    if reps:
-        add(f"  LIGGGHTS is run {len(reps)} times and the median is reported (the runs gave "
-            + ", ".join(f"{1e6/r:.3g}" for r in sorted(reps, reverse=True)) + " us per particle-step).")
+    for code, name in (("cfSpheres", "chargedFoam's spheres"), ("liggghts", "LIGGGHTS")):
+        reps = codes.get(code, {}).get("repeats", [])
+        if len(reps) > 1:
+            add(f"  {name}: {len(reps)} runs, taken in turns with the other code's, the median reported "
+                "(the runs gave " + ", ".join(f"{1e6/r:.3g}" for r in sorted(reps, reverse=True))
+                + " us per particle-step).")
     add("  Expect about +-20 % from run to run on this shared machine. The ratios are robust to that,")
     add("  the third digit is not.")
     if sp:

@@ -808,40 +808,6 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
 }
 
 
-Foam::ellipsoidContact::result Foam::ellipsoidContact::sphereSphere
-(
-    const point& c1,
-    const scalar r1,
-    const point& c2,
-    const scalar r2
-)
-{
-    const vector d = c2 - c1;
-    const scalar dist = mag(d);
-    const scalar overlap = r1 + r2 - dist;
-
-    result r;
-    r.n = unitOrX(d);
-    r.used = method::sphere;
-
-    if (!(overlap > 0))
-    {
-        r.contact = false;
-        r.x1 = c1;
-        r.x2 = c2;
-        r.used = method::none;
-        return r;
-    }
-
-    r.contact = true;
-    r.x1 = c1 + r1*r.n;
-    r.x2 = c2 - r2*r.n;
-    r.overlap = overlap;
-    r.reducedRadius = r1*r2/(r1 + r2);
-    return r;
-}
-
-
 Foam::ellipsoidContact::result Foam::ellipsoidContact::polynomialMethod
 (
     const ellipsoid& e1,

@@ -288,15 +288,7 @@ void Foam::rigidBodyRotation::freeRotation
 
     if (Imax - Imin <= sphereTolerance*Imax)
     {
-        // Sphere: Omega = L/I is constant in the inertial frame, so the
-        // motion is one exact rotation about the fixed axis L/|L|,
-        // composed on the left (an inertial-frame rotation)
-        const scalar magL = mag(Lin);
-        if (magL > 0)
-        {
-            const scalar Is = (I.x() + I.y() + I.z())/3;
-            q = quaternion(Lin/magL, magL/Is*dt)*q;
-        }
+        sphereRotation(q, Lin, (I.x() + I.y() + I.z())/3, dt);
     }
     else
     {
@@ -317,6 +309,35 @@ void Foam::rigidBodyRotation::freeRotation
 
     // Round-off control only: every sub-step is a unit quaternion product
     q.normalize();
+}
+
+
+void Foam::rigidBodyRotation::sphereRotation
+(
+    quaternion& q,
+    const vector& Lin,
+    const scalar I,
+    const scalar dt
+)
+{
+    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
+    if (!(I > 0) || !std::isfinite(I) || !std::isfinite(dt))
+    {
+        FatalErrorInFunction
+            << "Moment of inertia " << I << " (must be finite and > 0) or"
+            << " time step " << dt << " (finite) out of range"
+            << exit(FatalError);
+    }
+
+    // Omega = L/I is constant in the inertial frame, so the motion is one
+    // exact rotation about the fixed axis L/|L|, composed on the left (an
+    // inertial-frame rotation); normalised against round-off
+    const scalar magL = mag(Lin);
+    if (magL > 0)
+    {
+        q = quaternion(Lin/magL, magL/I*dt)*q;
+        q.normalize();
+    }
 }
 
 

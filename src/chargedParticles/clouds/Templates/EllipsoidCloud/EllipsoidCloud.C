@@ -18,9 +18,9 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     const scalar deltaT
 )
 {
-    // The kicks and the rotation do not move parcels through the mesh: a
-    // plain loop, not Cloud::move (whose tracking set-up and processor
-    // transfer exchange would be for nothing)
+    // The last half kick does not move parcels through the mesh: a plain
+    // loop, not Cloud::move (whose tracking set-up and processor transfer
+    // exchange would be for nothing)
     auto inPlace = [&](const typename parcelType::trackingData::trackPart part)
     {
         td.part() = part;
@@ -34,11 +34,24 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
     cloud.initialiseForces();
 
-    inPlace(parcelType::trackingData::tpVelocityHalfStep);
-
-    // The drift and the rotation (EllipsoidParcel::move)
+    // The first half kick, the drift and the rotation in one pass
+    // (EllipsoidParcel::move); ellipsoidCollision gathers its contact
+    // bodies as the parcels finish
+    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
+        ellipsoidCollisionType;
+    gatherer_ =
+        this->collision().active()
+      ? dynamic_cast<ellipsoidCollisionType*>(&this->collision())
+      : nullptr;
+    if (gatherer_)
+    {
+        gatherer_->beginGather();
+    }
     td.part() = parcelType::trackingData::tpLinearTrack;
+    kickInMove_ = true;
     CloudType::move(cloud, td, deltaT);
+    kickInMove_ = false;
+    gatherer_ = nullptr;
 
     this->updateCellOccupancy();
 
@@ -78,7 +91,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
             "logInterval",
             1
         )
-    )
+    ),
+    gatherer_(nullptr),
+    kickInMove_(false)
 {
     if (logInterval_ < 1)
     {
@@ -133,7 +148,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     CloudType(c, name),
     constProps_(c.constProps_),
     trackingTolerance_(c.trackingTolerance_),
-    logInterval_(c.logInterval_)
+    logInterval_(c.logInterval_),
+    gatherer_(nullptr),
+    kickInMove_(false)
 {}
 
 
@@ -148,7 +165,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     CloudType(mesh, name, c),
     constProps_(c.constProps_),
     trackingTolerance_(c.trackingTolerance_),
-    logInterval_(c.logInterval_)
+    logInterval_(c.logInterval_),
+    gatherer_(nullptr),
+    kickInMove_(false)
 {}
 
 

@@ -44,10 +44,20 @@ bool Foam::ChargedParcel<ParcelType>::move
     const scalar trackTime
 )
 {
-    if (td.part() == trackingData::tpVelocityHalfStep)
+    if
+    (
+        td.part() == trackingData::tpVelocityHalfStep
+     || (
+            td.part() == trackingData::tpLinearTrack
+         && cloud.kickInMove()
+         && this->startsStep()
+        )
+    )
     {
         // Leapfrog half kick with the electrostatic force at the current
-        // position; the base layer adds the contact force and torque
+        // position (the first one of a step may come with the move, see
+        // EllipsoidParcel::move); the base layer adds the contact force
+        // and torque
         this->U() += (0.5*trackTime/this->mass())*fE_;
     }
 

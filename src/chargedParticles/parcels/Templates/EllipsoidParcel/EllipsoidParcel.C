@@ -19,7 +19,8 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     drift_(p.drift_),
     allowedDrift_(p.allowedDrift_),
     centre_(p.centre_),
-    centreValid_(p.centreValid_)
+    centreValid_(p.centreValid_),
+    received_(p.received_)
 {}
 
 
@@ -36,7 +37,8 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     drift_(p.drift_),
     allowedDrift_(p.allowedDrift_),
     centre_(p.centre_),
-    centreValid_(p.centreValid_)
+    centreValid_(p.centreValid_),
+    received_(p.received_)
 {}
 
 
@@ -61,7 +63,19 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     // once, where the move ends (in parallel Cloud::move calls move again
     // for every parcel, finished or not, until no parcel changes
     // processor)
+    // The first half kick of the leapfrog, in the same pass (the cloud
+    // asks for it: EllipsoidCloud::moveCollide): the CollidingParcel's
+    // kick with the contact force and torque
+    if (cloud.kickInMove() && startsStep())
+    {
+        td.part() = trackingData::tpVelocityHalfStep;
+        ParcelType::move(cloud, td, trackTime);
+        td.part() = trackingData::tpLinearTrack;
+    }
+
     const bool unfinished = this->stepFraction() < 1;
+    typename TrackCloudType::parcelType& p =
+        static_cast<typename TrackCloudType::parcelType&>(*this);
     if (cloud.trackingTolerance() > 0 && this->active())
     {
         if (driftInCell(cloud, td, trackTime))
@@ -69,6 +83,8 @@ bool Foam::EllipsoidParcel<ParcelType>::move
             if (unfinished && td.keepParticle)
             {
                 rotate(trackTime);
+                received_ = false;
+                cloud.parcelMoved(p);
             }
             return td.keepParticle;
         }
@@ -82,6 +98,8 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     if (unfinished && keep && !td.switchProcessor)
     {
         rotate(trackTime);
+        received_ = false;
+        cloud.parcelMoved(p);
     }
     return keep;
 }
@@ -90,7 +108,17 @@ bool Foam::EllipsoidParcel<ParcelType>::move
 template<class ParcelType>
 void Foam::EllipsoidParcel<ParcelType>::rotate(const scalar dt)
 {
-    if (this->angularMomentum() != vector::zero)
+    if (isSphere())
+    {
+        rigidBodyRotation::sphereRotation
+        (
+            orientation_,
+            this->angularMomentum(),
+            rigidBodyRotation::sphereMoment(this->mass(), semiAxes_.x()),
+            dt
+        );
+    }
+    else if (this->angularMomentum() != vector::zero)
     {
         rigidBodyRotation::freeRotation
         (

@@ -36,7 +36,8 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     drift_(Zero),
     allowedDrift_(-1),
     centre_(Zero),
-    centreValid_(false)
+    centreValid_(false),
+    received_(false)
 {
     // The drift is streamed for the copies referred to other processors
     // (a transferred parcel has none: it was tracked); written fields

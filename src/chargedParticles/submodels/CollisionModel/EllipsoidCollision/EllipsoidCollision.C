@@ -309,25 +309,28 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     {
         // Mindlin spring with history (Rasera Eqs. 7, 8, 11, 12): keep xi
         // in the current tangent plane with its length, then stretch it
-        const scalar xiMag = mag(xi);
+        // (squared lengths: one square root per contact, none for the
+        // friction test of a sticking contact)
+        const scalar xiMag2 = magSqr(xi);
         xi -= (xi & n)*n;
-        const scalar xiProjMag = mag(xi);
-        if (xiProjMag > VSMALL)
+        const scalar xiProjMag2 = magSqr(xi);
+        if (xiProjMag2 > 0)
         {
-            xi *= xiMag/xiProjMag;
+            xi *= Foam::sqrt(xiMag2/xiProjMag2);
         }
-        xi += vt*dt;
 
         const scalar kT = 8*law.Gstar*sqrtRdelta;
-        const scalar springBefore = 0.5*kT*magSqr(xi - vt*dt);
+        const scalar springBefore = 0.5*kT*magSqr(xi);
+        xi += vt*dt;
         const scalar etaT =
             2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(kT*mStar);
         vector Ft = -kT*xi - etaT*vt;
-        const scalar FtMag = mag(Ft);
-        if (FtMag > law.mu*Fn)
+        const scalar FtMag2 = magSqr(Ft);
+        const scalar FtMax = law.mu*Fn;
+        if (FtMag2 > sqr(FtMax))
         {
             // Slip: friction limit, spring length consistent with it
-            Ft *= law.mu*Fn/FtMag;
+            Ft *= FtMax/Foam::sqrt(FtMag2);
             xi = kT > VSMALL ? -Ft/kT : vector(Zero);
         }
         F += Ft;
@@ -404,17 +407,21 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     contacts_.clear();
     deltaT_ = this->owner().mesh().time().deltaTValue();
 
-    // The contact bodies, once per collide (the barycentric-to-Cartesian
-    // conversion and omega from L are the costly parts)
-    parcels_.clear();
-    x_.clear();
-    bodies_.clear();
-    for (parcelType& p : this->owner())
+    // The contact bodies, once per collide, in cloud order: gathered by
+    // the move (EllipsoidCloud::moveCollide; parcels finish their move in
+    // cloud order, also in parallel where those received from other
+    // processors are appended and finish last) or here
+    if (!gathering_ || parcels_.size() != this->owner().size())
     {
-        parcels_.append(&p);
-        x_.append(p.centre());
-        bodies_.append(body(p));
+        parcels_.clear();
+        x_.clear();
+        bodies_.clear();
+        for (parcelType& p : this->owner())
+        {
+            gatherBody(p);
+        }
     }
+    gathering_ = false;
     force_.setSize(parcels_.size());
     torque_.setSize(parcels_.size());
     force_ = vector::zero;
@@ -446,6 +453,16 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     {
         buildNeighbourList();
     }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::beginGather()
+{
+    parcels_.clear();
+    x_.clear();
+    bodies_.clear();
+    gathering_ = true;
 }
 
 
@@ -583,14 +600,33 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     {
         // (the mesh is static)
         wallFaceBb_.setSize(mesh.nBoundaryFaces());
+        wallFaceIsBox_.setSize(mesh.nBoundaryFaces());
         forAll(wallFaceBb_, bFacei)
         {
-            wallFaceBb_[bFacei] = boundBox
-            (
-                mesh.points(),
-                mesh.faces()[mesh.nInternalFaces() + bFacei],
-                false
-            );
+            const label facei = mesh.nInternalFaces() + bFacei;
+            const boundBox& bb = wallFaceBb_[bFacei] =
+                boundBox(mesh.points(), mesh.faces()[facei], false);
+
+            // A plane face along axis k whose area is that of its box in
+            // the other two directions is that box
+            const vector& Sf = mesh.faceAreas()[facei];
+            const scalar magSf = mag(Sf);
+            const vector span = bb.span();
+            direction k = 0;
+            for (direction d = 1; d < vector::nComponents; ++d)
+            {
+                if (mag(Sf[d]) > mag(Sf[k]))
+                {
+                    k = d;
+                }
+            }
+            const direction a = (k + 1) % 3;
+            const direction b = (k + 2) % 3;
+            wallFaceIsBox_[bFacei] =
+                magSf > 0
+             && mag(Sf[k]) >= (1 - 1e-12)*magSf
+             && span[k] <= 1e-9*Foam::sqrt(magSf)
+             && mag(span[a]*span[b] - magSf) <= 1e-9*magSf;
         }
     }
     const labelListList& directWallFaces = il_.dwfil();
@@ -981,6 +1017,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         const vector& nOutOfDomain,
         const scalar faceArea,
         const boundBox& bb,
+        const bool box,
         const label patchi
     )
     {
@@ -1028,7 +1065,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         {
             return;
         }
-        if (f.nearestPoint(c.x2, pts).distance() > tol)
+        if (!box && f.nearestPoint(c.x2, pts).distance() > tol)
         {
             return;
         }
@@ -1097,6 +1134,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 Sf/magSf,
                 magSf,
                 wallFaceBb_[facei - mesh.nInternalFaces()],
+                wallFaceIsBox_[facei - mesh.nInternalFaces()],
                 // The patch only for the listed contacts (a search)
                 recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
             );
@@ -1118,6 +1156,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     rwf.unitNormal(pts),
                     rwf.mag(pts),
                     boundBox(pts, rwf, false),
+                    false,
                     rwf.patchIndex()
                 );
             }
@@ -1273,6 +1312,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     bodies_(),
     force_(),
     torque_(),
+    gathering_(false),
     deltaT_(owner.mesh().time().deltaTValue()),
     skin_
     (
@@ -1299,6 +1339,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     nWallContacts_(0),
     cellPositions_(),
     wallFaceBb_(),
+    wallFaceIsBox_(),
     recordContacts_(false),
     contacts_(),
     particleE_(0),
