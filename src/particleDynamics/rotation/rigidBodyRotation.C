@@ -332,11 +332,17 @@ void Foam::rigidBodyRotation::sphereRotation
     // Omega = L/I is constant in the inertial frame, so the motion is one
     // exact rotation about the fixed axis L/|L|, composed on the left (an
     // inertial-frame rotation); normalised against round-off
+    // (the rotation quaternion (cos(theta/2), sin(theta/2) L/|L|) built
+    // with one division, the normalisation with one: this runs for every
+    // sphere every step)
     const scalar magL = mag(Lin);
     if (magL > 0)
     {
-        q = quaternion(Lin/magL, magL/I*dt)*q;
-        q.normalize();
+        const scalar halfAngle = 0.5*magL*dt/I;
+        const scalar c = std::cos(halfAngle);
+        const scalar sByMagL = std::sin(halfAngle)/magL;
+        q = quaternion(c, sByMagL*Lin)*q;
+        q *= 1/mag(q);
     }
 }
 

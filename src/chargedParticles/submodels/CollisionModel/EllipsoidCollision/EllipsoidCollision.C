@@ -312,11 +312,14 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
         // (squared lengths: one square root per contact, none for the
         // friction test of a sticking contact)
         const scalar xiMag2 = magSqr(xi);
-        xi -= (xi & n)*n;
-        const scalar xiProjMag2 = magSqr(xi);
-        if (xiProjMag2 > 0)
+        if (xiMag2 > 0)
         {
-            xi *= Foam::sqrt(xiMag2/xiProjMag2);
+            xi -= (xi & n)*n;
+            const scalar xiProjMag2 = magSqr(xi);
+            if (xiProjMag2 > 0)
+            {
+                xi *= Foam::sqrt(xiMag2/xiProjMag2);
+            }
         }
 
         const scalar kT = 8*law.Gstar*sqrtRdelta;
@@ -391,7 +394,8 @@ Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
         p.mass(),
         cmptMax(p.semiAxes()) + dBl,
         dBl,
-        p.isSphere()
+        p.isSphere(),
+        labelPair(p.origProc(), p.origId())
     };
 }
 
@@ -476,12 +480,10 @@ bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
     const scalar maxMove2 = sqr(0.5*skin_);
     forAll(parcels_, i)
     {
-        const parcelType& p = *parcels_[i];
         if
         (
             listParcels_[i] != parcels_[i]
-         || listIds_[i].first() != p.origProc()
-         || listIds_[i].second() != p.origId()
+         || listIds_[i] != bodies_[i].id
          || magSqr(x_[i] - listX_[i]) > maxMove2
         )
         {
@@ -505,7 +507,7 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
         HashTable<label, labelPair, Hash<labelPair>> oldOf;
         forAll(parcels_, i)
         {
-            const labelPair id(parcels_[i]->origProc(), parcels_[i]->origId());
+            const labelPair& id = bodies_[i].id;
             if (i < listIds_.size() && listIds_[i] == id)
             {
                 oldIndex[i] = i;
@@ -540,8 +542,7 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     scalar rMax = 0;
     forAll(parcels_, i)
     {
-        const parcelType& p = *parcels_[i];
-        listIds_[i] = labelPair(p.origProc(), p.origId());
+        listIds_[i] = bodies_[i].id;
         rMax = max(rMax, bodies_[i].radius);
     }
 
