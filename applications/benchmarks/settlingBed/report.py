@@ -171,6 +171,11 @@ def write_doc(path, res, table, quick=False, regenerated=False):
             add(f"  {name}: {len(reps)} runs, taken in turns with the other code's, the median reported "
                 "(the runs gave " + ", ".join(f"{1e6/r:.3g}" for r in sorted(reps, reverse=True))
                 + " us per particle-step).")
+    cfRuns = codes.get("cfSpheres", {}).get("runRates", [])
+    lgRuns = codes.get("liggghts", {}).get("runRates", [])
+    if len(cfRuns) > 1 and len(cfRuns) == len(lgRuns):
+        add("  The ratio of each pair of runs taken in turn (cfSpheres / LIGGGHTS): "
+            + ", ".join(f"{lg/cf:.2f}" for cf, lg in zip(cfRuns, lgRuns)) + ".")
     add("  Expect about +-20 % from run to run on this shared machine. The ratios are robust to that,")
     add("  the third digit is not.")
     if sp:
