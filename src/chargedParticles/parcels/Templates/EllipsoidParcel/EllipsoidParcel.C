@@ -58,14 +58,9 @@ bool Foam::EllipsoidParcel<ParcelType>::move
         return ParcelType::move(cloud, td, trackTime);
     }
 
-    // The drift (lazy or tracked), then the rotation of the orientation
-    // with the kicked angular momentum, in the same pass over the cloud:
-    // once, where the move ends (in parallel Cloud::move calls move again
-    // for every parcel, finished or not, until no parcel changes
-    // processor)
-    // The first half kick of the leapfrog, in the same pass (the cloud
-    // asks for it: EllipsoidCloud::moveCollide): the CollidingParcel's
-    // kick with the contact force and torque
+    // The first half kick of the leapfrog, in the same pass over the cloud
+    // as the drift when the cloud asks for it (EllipsoidCloud::moveCollide):
+    // the CollidingParcel's kick with the contact force and torque
     if (cloud.kickInMove() && startsStep())
     {
         td.part() = trackingData::tpVelocityHalfStep;
@@ -73,18 +68,28 @@ bool Foam::EllipsoidParcel<ParcelType>::move
         td.part() = trackingData::tpLinearTrack;
     }
 
-    const bool unfinished = this->stepFraction() < 1;
+    // The drift (lazy or tracked), then the rotation of the orientation
+    // with the kicked angular momentum and the contact body for the
+    // collision model, once, where the move ends: in parallel Cloud::move
+    // calls move again for every parcel, finished or not, until no parcel
+    // changes processor, and a parcel may arrive with its step done
+    const bool ends = this->stepFraction() < 1 || received_;
     typename TrackCloudType::parcelType& p =
         static_cast<typename TrackCloudType::parcelType&>(*this);
+    auto finish = [&]()
+    {
+        rotate(trackTime);
+        received_ = false;
+        cloud.parcelMoved(p);
+    };
+
     if (cloud.trackingTolerance() > 0 && this->active())
     {
         if (driftInCell(cloud, td, trackTime))
         {
-            if (unfinished && td.keepParticle)
+            if (ends && td.keepParticle)
             {
-                rotate(trackTime);
-                received_ = false;
-                cloud.parcelMoved(p);
+                finish();
             }
             return td.keepParticle;
         }
@@ -95,11 +100,9 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     const bool keep = ParcelType::move(cloud, td, trackTime);
     centreValid_ = false;
     allowedDrift_ = -1;
-    if (unfinished && keep && !td.switchProcessor)
+    if (ends && keep && !td.switchProcessor)
     {
-        rotate(trackTime);
-        received_ = false;
-        cloud.parcelMoved(p);
+        finish();
     }
     return keep;
 }
