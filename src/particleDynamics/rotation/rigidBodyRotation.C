@@ -330,11 +330,11 @@ void Foam::rigidBodyRotation::sphereRotation
     }
 
     // Omega = L/I is constant in the inertial frame, so the motion is one
-    // exact rotation about the fixed axis L/|L|, composed on the left (an
-    // inertial-frame rotation); normalised against round-off
-    // (the rotation quaternion (cos(theta/2), sin(theta/2) L/|L|) built
-    // with one division, the normalisation with one: this runs for every
-    // sphere every step)
+    // exact rotation about the fixed axis L/|L| by theta = |L| dt/I,
+    // composed on the left (an inertial-frame rotation) and normalised
+    // against round-off; one division each for the rotation quaternion
+    // (cos(theta/2), sin(theta/2) L/|L|) and the normalisation (every
+    // sphere, every step)
     const scalar magL = mag(Lin);
     if (magL > 0)
     {

@@ -47,11 +47,7 @@ bool Foam::ChargedParcel<ParcelType>::move
     if
     (
         td.part() == trackingData::tpVelocityHalfStep
-     || (
-            td.part() == trackingData::tpLinearTrack
-         && cloud.kickInMove()
-         && this->startsStep()
-        )
+     || this->kicksInMove(cloud, td)
     )
     {
         // Leapfrog half kick with the electrostatic force at the current

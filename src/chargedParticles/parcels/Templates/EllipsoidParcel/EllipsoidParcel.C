@@ -61,7 +61,7 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     // The first half kick of the leapfrog, in the same pass over the cloud
     // as the drift when the cloud asks for it (EllipsoidCloud::moveCollide):
     // the CollidingParcel's kick with the contact force and torque
-    if (cloud.kickInMove() && startsStep())
+    if (kicksInMove(cloud, td))
     {
         td.part() = trackingData::tpVelocityHalfStep;
         ParcelType::move(cloud, td, trackTime);

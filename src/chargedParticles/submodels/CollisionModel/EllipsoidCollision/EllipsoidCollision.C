@@ -36,6 +36,25 @@ void keepAccessedRecords(Foam::DynamicList<Record>& records)
     records.setSize(n);     // a DynamicList keeps its capacity
 }
 
+
+//- The record lists of a parcel, to change in place. They belong to the
+//  (non-const) parcel; CollisionRecordList only has const accessors.
+template<class Records>
+auto mutablePairRecords(Records& records)
+ -> typename std::decay<decltype(records.pairRecords())>::type&
+{
+    typedef typename std::decay<decltype(records.pairRecords())>::type list;
+    return const_cast<list&>(records.pairRecords());
+}
+
+template<class Records>
+auto mutableWallRecords(Records& records)
+ -> typename std::decay<decltype(records.wallRecords())>::type&
+{
+    typedef typename std::decay<decltype(records.wallRecords())>::type list;
+    return const_cast<list&>(records.wallRecords());
+}
+
 } // End anonymous namespace
 
 
@@ -473,7 +492,7 @@ void Foam::EllipsoidCollision<CloudType>::beginGather()
 template<class CloudType>
 bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
 {
-    if (listParcels_.size() != parcels_.size())
+    if (listIds_.size() != parcels_.size())
     {
         return false;
     }
@@ -482,8 +501,7 @@ bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
     {
         if
         (
-            listParcels_[i] != parcels_[i]
-         || listIds_[i] != bodies_[i].id
+            listIds_[i] != bodies_[i].id
          || magSqr(x_[i] - listX_[i]) > maxMove2
         )
         {
@@ -536,7 +554,6 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     List<char> oldTouching;
     oldTouching.transfer(listTouching_);
 
-    listParcels_ = parcels_;
     listX_ = x_;
     listIds_.setSize(n);
     scalar rMax = 0;
@@ -668,9 +685,7 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
         {
             // No wall in reach: a wall contact of the last step has
             // ended (in parallel all records are renewed every step)
-            const auto& records = p.collisionRecords().wallRecords();
-            typedef typename std::decay<decltype(records)>::type wallList;
-            const_cast<wallList&>(records).clear();
+            mutableWallRecords(p.collisionRecords()).clear();
         }
     }
 }
@@ -1184,21 +1199,14 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
     // Forget the history of contacts that ended: what
     // CollisionRecordList::update() does, in place (update() copies both
     // record lists into new ones for every parcel and step: two
-    // allocations each, 6 % of a settled bed of spheres). The lists
-    // belong to the (non-const) parcels; CollisionRecordList only has
-    // const accessors.
+    // allocations each, 6 % of a settled bed of spheres)
     auto compact = [](parcelType& p, const bool pairs)
     {
-        auto& records = p.collisionRecords();
-        typedef typename std::decay<decltype(records.pairRecords())>::type
-            pairList;
-        typedef typename std::decay<decltype(records.wallRecords())>::type
-            wallList;
         if (pairs)
         {
-            keepAccessedRecords(const_cast<pairList&>(records.pairRecords()));
+            keepAccessedRecords(mutablePairRecords(p.collisionRecords()));
         }
-        keepAccessedRecords(const_cast<wallList&>(records.wallRecords()));
+        keepAccessedRecords(mutableWallRecords(p.collisionRecords()));
     };
 
     // The pair histories live in the neighbour list. The parcels' records
@@ -1324,7 +1332,6 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         )
     ),
     maxDistance_(readPositive(this->coeffDict(), "maxInteractionDistance")),
-    listParcels_(),
     listIds_(),
     listX_(),
     listStart_(),
