@@ -3,7 +3,8 @@
 # contact charging: negative kappaC, a wall patch without parameters, a
 # missing Gamma, a non-positive cutoff distance, charging without
 # ellipsoidCollision; lazy-tracking tolerance, log interval and neighbour
-# skin out of range.
+# skin out of range; particle permittivity, the applied field's type and
+# the near field's entries.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -70,6 +71,24 @@ badCase chargingWithoutEllipsoidCollision 'electrostaticsModel directCoulomb;' \
     'Entry triboChargingModel GammaKappa needs collisionModel ellipsoidCollision'
 badCase missingCutoff 'electrostaticsModel directCoulomb;' 'electrostaticsModel cutoffCoulomb;' \
     'Entry rCut .* is missing: it must be given, finite and > 0'
+
+# Dielectric parcels, applied field and near field
+badCase zeroParticleEpsilonR 'rho0 +1000;' 'rho0 1000; epsilonR 0;' \
+    'Entry epsilonR \(relative permittivity of the particles\) = 0 .* out of range: it must be finite and > 0'
+badCase negativeParcelEpsilonR 'rho 1000; q  1e-12; ' 'rho 1000; q  1e-12; epsilonR -2; ' \
+    'Entry epsilonR of parcel 0 .* out of range \(-2\).*> 0'
+badCase scalarAppliedField 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel directCoulomb; appliedField 1e5;' \
+    'Entry appliedField in .* must be a vector \[V/m\]'
+badCase misplacedNearField 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel directCoulomb; nearField { type inducedDipole; }' \
+    'Entry nearField in .* is misplaced: the near field is selected in the far field.s coefficients, directCoulombCoeffs'
+badCase nearFieldNotDictionary 'epsilonR +1;' 'epsilonR 1; nearField inducedDipole;' \
+    'Entry nearField in .* must be a dictionary'
+badCase unknownNearField 'epsilonR +1;' 'epsilonR 1; nearField { type multipole; }' \
+    'Unknown type type multipole'
+badCase negativeRNear 'epsilonR +1;' 'epsilonR 1; nearField { type inducedDipole; rNear -1; }' \
+    'Entry rNear = -1 in .* is out of range: it must be finite and > 0'
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

@@ -7,7 +7,9 @@ particle: e.g. a serial run and the reconstructed parallel run of one case.
 Particles are matched by position (nearest neighbour, which must be a
 one-to-one map); the counts must agree. Checks, printed as PASS:/FAIL:
 lines: particle count, max |xA - xB| / max|xA| (positions, Cartesian
-'positions' file), max |UA - UB| / max|UA|, charges identical.
+'positions' file), max |UA - UB| / max|UA|, charges identical; with
+--rotation also the orientations (max difference of the quaternions, sign
+fixed) and the angular momenta (relative).
 """
 import argparse
 import os
@@ -34,6 +36,8 @@ def main():
     ap.add_argument("--cloud", default="cloud")
     ap.add_argument("--tol", type=float, default=1e-10)
     ap.add_argument("--name", default="clouds")
+    ap.add_argument("--rotation", action="store_true",
+                    help="also compare orientations and angular momenta")
     ap.add_argument("--qtol", type=float, default=0,
                     help="relative tolerance of the charges (default: identical)")
     args = ap.parse_args()
@@ -72,6 +76,24 @@ def main():
         eq = np.abs(qa - qb[match]).max()/scale_q if scale_q > 0 else 0.0
         check("charges", eq <= args.qtol,
               f"(max rel. difference {eq:.3e}, tol {args.qtol:g})")
+
+    if args.rotation:
+        def rot(time_dir):
+            d = os.path.join(time_dir, "lagrangian", args.cloud)
+            eps = read_field(os.path.join(d, "orientationEps")).reshape(-1, 3)
+            eta = read_field(os.path.join(d, "orientationEta")).reshape(-1, 1)
+            L = read_field(os.path.join(d, "angularMomentum")).reshape(-1, 3)
+            o = np.hstack([eta, eps])
+            return o*np.where(o[:, :1] < 0, -1, 1), L
+        oa, La = rot(args.a)
+        ob, Lb = rot(args.b)
+        eo = np.abs(oa - ob[match]).max()
+        check("orientations", eo <= args.tol,
+              f"(max quaternion difference {eo:.3e}, tol {args.tol:g})")
+        scale_L = np.linalg.norm(La, axis=1).max()
+        eL = np.linalg.norm(La - Lb[match], axis=1).max()/scale_L if scale_L > 0 else 0.0
+        check("angularMomenta", eL <= args.tol and scale_L > 0,
+              f"(max rel. difference {eL:.3e}, tol {args.tol:g})")
     return 0 if ok else 1
 
 

@@ -401,7 +401,7 @@ int main(int argc, char *argv[])
         }
 
         OFstream tab(outDir/(model + ".dat"));
-        tab.precision(10);
+        tab.precision(17);
         tab << "# bemElectrostatics, model " << model << ", kappa0 "
             << kappa0 << ", eps0 " << eps0 << nl
             << "# sweep " << sweepType

@@ -48,7 +48,7 @@ void Foam::ChargedCloud<CloudType>::setModels()
     }
 
     // The pairs in contact for the electrostatics (Ruan Eq. 44)
-    if (electrostatics().active() && electrostatics().readsCollisionRecords())
+    if (electrostatics().active() && electrostatics().readsContacts())
     {
         collisionModelType* ec =
             dynamic_cast<collisionModelType*>(&this->collision());
@@ -131,7 +131,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
         // Electrostatics off: no stale force from a restart may act
         if (!electrostatics().active())
         {
-            electrostatics().calculate();
+            electrostatics().update();
         }
     }
 }
@@ -179,6 +179,7 @@ void Foam::ChargedCloud<CloudType>::setParcelThermoProperties
 {
     CloudType::setParcelThermoProperties(parcel, lagrangianDt);
     parcel.q() = constProps_.q0();
+    parcel.epsilonR() = constProps_.epsilonR0();
 }
 
 
@@ -266,7 +267,7 @@ void Foam::ChargedCloud<CloudType>::initialiseForces()
 
     if (forcesStale_ && electrostatics().active())
     {
-        electrostatics().calculate();
+        electrostatics().update();
     }
     forcesStale_ = false;
 }
@@ -288,7 +289,7 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
 
     if (electrostatics().active())
     {
-        electrostatics().calculate();
+        electrostatics().update();
     }
     forcesStale_ = false;
 }
@@ -354,8 +355,9 @@ void Foam::ChargedCloud<CloudType>::info()
         if (electrostatics().hasEnergy())
         {
             Info<< "    Electrostatic energy            = "
-                << electrostatics().energy() << nl;
+                << electrostatics().totalEnergy() << nl;
         }
+        electrostatics().nearField().info();
 
         // <|fE|/m> (Boutsikakis 2023 Eq. 28), all processors
         scalar n = this->size(), sumA = 0;

@@ -12,8 +12,11 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel(const ChargedParcel<ParcelType>& 
 :
     ParcelType(p),
     q_(p.q_),
+    epsilonR_(p.epsilonR_),
     fE_(p.fE_),
+    tE_(p.tE_),
     E_(p.E_),
+    dipole_(p.dipole_),
     chargingRecords_(p.chargingRecords_)
 {}
 
@@ -27,8 +30,11 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 :
     ParcelType(p, mesh),
     q_(p.q_),
+    epsilonR_(p.epsilonR_),
     fE_(p.fE_),
+    tE_(p.tE_),
     E_(p.E_),
+    dipole_(p.dipole_),
     chargingRecords_(p.chargingRecords_)
 {}
 
@@ -50,11 +56,12 @@ bool Foam::ChargedParcel<ParcelType>::move
      || this->kicksInMove(cloud, td)
     )
     {
-        // Leapfrog half kick with the electrostatic force at the current
-        // position (the first one of a step may come with the move, see
-        // EllipsoidParcel::move); the base layer adds the contact force
-        // and torque
+        // Leapfrog half kick with the electrostatic force and torque at
+        // the current position (the first one of a step may come with the
+        // move, see EllipsoidParcel::move); the base layer adds the
+        // contact force and torque
         this->U() += (0.5*trackTime/this->mass())*fE_;
+        this->angularMomentum() += (0.5*trackTime)*tE_;
     }
 
     const bool keep = ParcelType::move(cloud, td, trackTime);
@@ -75,7 +82,9 @@ void Foam::ChargedParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
     fE_ = transform(T, fE_);
+    tE_ = transform(T, tE_);
     E_ = transform(T, E_);
+    dipole_ = transform(T, dipole_);
 }
 
 

@@ -17,7 +17,7 @@ Foam::string Foam::ChargedParcel<ParcelType>::propertyList_ =
 template<class ParcelType>
 const std::size_t Foam::ChargedParcel<ParcelType>::sizeofFields
 (
-    offsetof(ChargedParcel<ParcelType>, E_) + sizeof(vector)
+    offsetof(ChargedParcel<ParcelType>, dipole_) + sizeof(vector)
   - offsetof(ChargedParcel<ParcelType>, q_)
 );
 
@@ -35,23 +35,29 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 :
     ParcelType(mesh, is, readFields, newFormat),
     q_(0),
+    epsilonR_(1),
     fE_(Zero),
+    tE_(Zero),
     E_(Zero),
+    dipole_(Zero),
     chargingRecords_()
 {
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> q_ >> fE_ >> E_;
+            is >> q_ >> epsilonR_ >> fE_ >> tE_ >> E_ >> dipole_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
             // Non-native label or scalar size
             is.beginRawRead();
             readRawScalar(is, &q_);
+            readRawScalar(is, &epsilonR_);
             readRawScalar(is, fE_.data(), vector::nComponents);
+            readRawScalar(is, tE_.data(), vector::nComponents);
             readRawScalar(is, E_.data(), vector::nComponents);
+            readRawScalar(is, dipole_.data(), vector::nComponents);
             is.endRawRead();
         }
         else
@@ -82,9 +88,22 @@ void Foam::ChargedParcel<ParcelType>::readFields(CloudType& c)
 
     // Optional (cases written before they existed): E is recomputed by
     // the electrostatics before it is used; no charging history means
-    // every current contact counts from zero area
+    // every current contact counts from zero area; epsilonR defaults to
+    // the constant properties', tE and the dipole to zero
     IOField<vector> E(c.fieldIOobject("E", IOobject::READ_IF_PRESENT));
     const bool haveE = E.size() == c.size();
+    IOField<scalar> epsilonR
+    (
+        c.fieldIOobject("epsilonR", IOobject::READ_IF_PRESENT)
+    );
+    const bool haveEpsilonR = epsilonR.size() == c.size();
+    IOField<vector> tE(c.fieldIOobject("tE", IOobject::READ_IF_PRESENT));
+    const bool haveTE = tE.size() == c.size();
+    IOField<vector> dipole
+    (
+        c.fieldIOobject("dipole", IOobject::READ_IF_PRESENT)
+    );
+    const bool haveDipole = dipole.size() == c.size();
 
     const word rec("chargingRecords");
     labelFieldCompactIOField pairAccessed
@@ -128,10 +147,19 @@ void Foam::ChargedParcel<ParcelType>::readFields(CloudType& c)
     for (ChargedParcel<ParcelType>& p : c)
     {
         p.q_ = q[i];
+        p.epsilonR_ = haveEpsilonR ? epsilonR[i] : c.constProps().epsilonR0();
         p.fE_ = fE[i];
         if (haveE)
         {
             p.E_ = E[i];
+        }
+        if (haveTE)
+        {
+            p.tE_ = tE[i];
+        }
+        if (haveDipole)
+        {
+            p.dipole_ = dipole[i];
         }
         if (haveRecords)
         {
@@ -161,8 +189,14 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
     const bool valid = np;
 
     IOField<scalar> q(c.fieldIOobject("q", IOobject::NO_READ), np);
+    IOField<scalar> epsilonR
+    (
+        c.fieldIOobject("epsilonR", IOobject::NO_READ), np
+    );
     IOField<vector> fE(c.fieldIOobject("fE", IOobject::NO_READ), np);
+    IOField<vector> tE(c.fieldIOobject("tE", IOobject::NO_READ), np);
     IOField<vector> E(c.fieldIOobject("E", IOobject::NO_READ), np);
+    IOField<vector> dipole(c.fieldIOobject("dipole", IOobject::NO_READ), np);
 
     const word rec("chargingRecords");
     labelFieldCompactIOField pairAccessed
@@ -198,8 +232,11 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
     for (const ChargedParcel<ParcelType>& p : c)
     {
         q[i] = p.q();
+        epsilonR[i] = p.epsilonR();
         fE[i] = p.fE();
+        tE[i] = p.tE();
         E[i] = p.E();
+        dipole[i] = p.dipole();
         const chargingRecordList& r = p.chargingRecords();
         pairAccessed[i] = r.pairAccessed();
         pairOrigProc[i] = r.pairOrigProcOfOther();
@@ -212,8 +249,11 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
     }
 
     q.write(valid);
+    epsilonR.write(valid);
     fE.write(valid);
+    tE.write(valid);
     E.write(valid);
+    dipole.write(valid);
     pairAccessed.write(valid);
     pairOrigProc.write(valid);
     pairOrigId.write(valid);
@@ -240,8 +280,11 @@ void Foam::ChargedParcel<ParcelType>::writeProperties
         ParcelType::writeProperty(os, Name, Value, namesOnly, delim, filters)
 
     writeProp("q", q_);
+    writeProp("epsilonR", epsilonR_);
     writeProp("fE", fE_);
+    writeProp("tE", tE_);
     writeProp("E", E_);
+    writeProp("dipole", dipole_);
 
     #undef writeProp
 }
@@ -260,15 +303,21 @@ void Foam::ChargedParcel<ParcelType>::readObjects
     if (!c.size()) return;
 
     const auto& q = cloud::lookupIOField<scalar>("q", obr);
+    const auto& epsilonR = cloud::lookupIOField<scalar>("epsilonR", obr);
     const auto& fE = cloud::lookupIOField<vector>("fE", obr);
+    const auto& tE = cloud::lookupIOField<vector>("tE", obr);
     const auto& E = cloud::lookupIOField<vector>("E", obr);
+    const auto& dipole = cloud::lookupIOField<vector>("dipole", obr);
 
     label i = 0;
     for (ChargedParcel<ParcelType>& p : c)
     {
         p.q_ = q[i];
+        p.epsilonR_ = epsilonR[i];
         p.fE_ = fE[i];
+        p.tE_ = tE[i];
         p.E_ = E[i];
+        p.dipole_ = dipole[i];
         ++i;
     }
 }
@@ -287,15 +336,21 @@ void Foam::ChargedParcel<ParcelType>::writeObjects
     const label np = c.size();
 
     auto& q = cloud::createIOField<scalar>("q", np, obr);
+    auto& epsilonR = cloud::createIOField<scalar>("epsilonR", np, obr);
     auto& fE = cloud::createIOField<vector>("fE", np, obr);
+    auto& tE = cloud::createIOField<vector>("tE", np, obr);
     auto& E = cloud::createIOField<vector>("E", np, obr);
+    auto& dipole = cloud::createIOField<vector>("dipole", np, obr);
 
     label i = 0;
     for (const ChargedParcel<ParcelType>& p : c)
     {
         q[i] = p.q();
+        epsilonR[i] = p.epsilonR();
         fE[i] = p.fE();
+        tE[i] = p.tE();
         E[i] = p.E();
+        dipole[i] = p.dipole();
         ++i;
     }
 }
@@ -314,8 +369,11 @@ Foam::Ostream& Foam::operator<<
     {
         os  << static_cast<const ParcelType&>(p)
             << token::SPACE << p.q()
+            << token::SPACE << p.epsilonR()
             << token::SPACE << p.fE()
+            << token::SPACE << p.tE()
             << token::SPACE << p.E()
+            << token::SPACE << p.dipole()
             << token::SPACE << p.chargingRecords();
     }
     else

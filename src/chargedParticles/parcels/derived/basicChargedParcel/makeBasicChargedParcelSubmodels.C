@@ -28,6 +28,8 @@ Description
 #include "CutoffCoulomb.H"
 #include "MeshPoisson.H"
 #include "ImageCoulomb.H"
+#include "NoNearField.H"
+#include "InducedDipoleNearField.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "EllipsoidDragForce.H"
@@ -60,6 +62,10 @@ makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(CutoffCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(MeshPoisson, basicChargedCloud);
 makeElectrostaticsModelType(ImageCoulomb, basicChargedCloud);
+
+makeNearFieldModel(basicChargedCloud);
+makeNearFieldModelType(NoNearField, basicChargedCloud);
+makeNearFieldModelType(InducedDipoleNearField, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);

@@ -26,6 +26,7 @@ void Foam::ParticleHistory<CloudType>::openFile()
     os.precision(17);
     os  << "# Particle history of cloud " << this->owner().name() << nl
         << "# time origProc origId x y z Ux Uy Uz d rho q fEx fEy fEz"
+        << " omegax omegay omegaz qw qx qy qz tEx tEy tEz px py pz"
         << nl;
 }
 
@@ -82,7 +83,8 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
         return;
     }
 
-    // Local rows: the two labels and the twelve scalars of each parcel
+    // Local rows: the two labels and the nv scalars of each parcel
+    const label nv = 25;
     label np = 0;
     for (const auto& p : this->owner())
     {
@@ -95,7 +97,7 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
     List<labelList> ids(Pstream::nProcs());
     List<scalarList> values(Pstream::nProcs());
     ids[me].setSize(2*np);
-    values[me].setSize(12*np);
+    values[me].setSize(nv*np);
 
     label i = 0;
     for (const auto& p : this->owner())
@@ -107,7 +109,7 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
         ids[me][2*i] = p.origProc();
         ids[me][2*i + 1] = p.origId();
         const point x = p.centre();
-        scalar* v = &values[me][12*i];
+        scalar* v = &values[me][nv*i];
         for (direction c = 0; c < 3; ++c)
         {
             v[c] = x[c];
@@ -117,6 +119,16 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
         v[6] = p.d();
         v[7] = p.rho();
         v[8] = p.q();
+        const vector omega = p.omega();
+        const quaternion& o = p.orientation();
+        v[15] = o.w();
+        for (direction c = 0; c < 3; ++c)
+        {
+            v[12 + c] = omega[c];
+            v[16 + c] = o.v()[c];
+            v[19 + c] = p.tE()[c];
+            v[22 + c] = p.dipole()[c];
+        }
         ++i;
     }
 
@@ -157,9 +169,9 @@ void Foam::ParticleHistory<CloudType>::postEvolve()
         const label r = rowOf[k];
         os  << time.value() << ' ' << ids[proci][2*r] << ' '
             << ids[proci][2*r + 1];
-        for (label c = 0; c < 12; ++c)
+        for (label c = 0; c < nv; ++c)
         {
-            os  << ' ' << values[proci][12*r + c];
+            os  << ' ' << values[proci][nv*r + c];
         }
         os  << nl;
     }

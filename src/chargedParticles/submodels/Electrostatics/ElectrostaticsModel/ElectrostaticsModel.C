@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ElectrostaticsModel.H"
+#include "NearFieldModel.H"
 #include "ListListOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -21,6 +22,55 @@ Foam::dictionary Foam::ElectrostaticsModel<CloudType>::withCoeffs
         d.add(word(type + "Coeffs"), dictionary());
     }
     return d;
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::readLayers(const dictionary& dict)
+{
+    // The near field belongs to the far field's coefficients: a nearField
+    // entry next to electrostaticsModel is a misplaced one
+    if (dict.found("nearField"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry nearField in " << dict.name().c_str() << " is"
+            << " misplaced: the near field is selected in the far field's"
+            << " coefficients, " << this->modelType() << "Coeffs { nearField"
+            << " { type none|inducedDipole; } }" << exit(FatalIOError);
+    }
+
+    if (dict.found("appliedField"))
+    {
+        // A vector constant starts with '(', a Function1 with its type; a
+        // number is a scalar given for a vector
+        const ITstream& is = dict.lookup("appliedField");
+        const token first(is.size() ? is[0] : token());
+        if (!first.isWord() && !first.isPunctuation())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry appliedField in " << dict.name().c_str()
+                << " must be a vector [V/m], e.g. (0 0 1e5), or a Function1"
+                << " of time giving one (e.g. sine {...}); found " << first
+                << exit(FatalIOError);
+        }
+        appliedField_ = Function1<vector>::New("appliedField", dict);
+        const vector Ea0 =
+            appliedField_->value(this->owner().db().time().value());
+        if (!std::isfinite(mag(Ea0)))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry appliedField in " << dict.name().c_str()
+                << " is not finite: " << Ea0 << exit(FatalIOError);
+        }
+        Info<< "    Applied field " << appliedField_->type() << ", "
+            << Ea0 << " V/m now" << endl;
+    }
+
+    nearField_ = NearFieldModel<CloudType>::New
+    (
+        this->coeffDict(),
+        this->owner()
+    );
 }
 
 
@@ -110,7 +160,10 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
 template<class CloudType>
 Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel(CloudType& owner)
 :
-    CloudSubModelBase<CloudType>(owner)
+    CloudSubModelBase<CloudType>(owner),
+    appliedField_(nullptr),
+    nearField_(NearFieldModel<CloudType>::New(dictionary(), owner)),
+    Ea_(Zero)
 {}
 
 
@@ -122,8 +175,13 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
     const word& type
 )
 :
-    CloudSubModelBase<CloudType>(owner, withCoeffs(dict, type), typeName, type)
-{}
+    CloudSubModelBase<CloudType>(owner, withCoeffs(dict, type), typeName, type),
+    appliedField_(nullptr),
+    nearField_(nullptr),
+    Ea_(Zero)
+{
+    readLayers(dict);
+}
 
 
 template<class CloudType>
@@ -132,8 +190,80 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
     const ElectrostaticsModel<CloudType>& em
 )
 :
-    CloudSubModelBase<CloudType>(em)
+    CloudSubModelBase<CloudType>(em),
+    appliedField_(em.appliedField_.clone()),
+    nearField_(em.nearField_->clone()),
+    Ea_(em.Ea_)
 {}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+bool Foam::ElectrostaticsModel<CloudType>::hasLayers() const
+{
+    return appliedField_.valid() || nearField_->active();
+}
+
+
+template<class CloudType>
+bool Foam::ElectrostaticsModel<CloudType>::readsContacts() const
+{
+    return readsCollisionRecords() || nearField_->readsCollisionRecords();
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::update()
+{
+    calculate();
+
+    if (appliedField_.valid())
+    {
+        Ea_ = appliedField_->value(this->owner().db().time().value());
+        for (auto& p : this->owner())
+        {
+            p.E() += Ea_;
+            p.fE() += p.q()*Ea_;
+        }
+    }
+
+    if (nearField_->active())
+    {
+        nearField_->correct(*this);
+    }
+    else
+    {
+        // No torque or dipole without a near field (nor stale ones from
+        // a restart)
+        for (auto& p : this->owner())
+        {
+            p.tE() = Zero;
+            p.dipole() = Zero;
+        }
+    }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::ElectrostaticsModel<CloudType>::totalEnergy() const
+{
+    scalar e = energy();
+    if (appliedField_.valid())
+    {
+        scalar eA = 0;
+        for (const auto& p : this->owner())
+        {
+            eA -= p.q()*(Ea_ & p.centre());
+        }
+        e += returnReduce(eA, sumOp<scalar>());
+    }
+    if (nearField_->active())
+    {
+        e += nearField_->energy();
+    }
+    return e;
+}
 
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //

@@ -15,7 +15,16 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
 :
     DirectCoulomb<CloudType>(dict, owner, typeName),
     solver_(new meshPoisson(owner.mesh(), this->coeffDict()))
-{}
+{
+    if (this->appliedField().valid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry appliedField in " << dict.name().c_str() << " does"
+            << " not go with electrostaticsModel meshPoisson: the potential's"
+            << " boundary conditions (electrodes) apply the field there"
+            << exit(FatalIOError);
+    }
+}
 
 
 template<class CloudType>

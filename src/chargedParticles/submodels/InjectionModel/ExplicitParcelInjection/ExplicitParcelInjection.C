@@ -109,12 +109,14 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
     d_.setSize(n);
     rho_.setSize(n);
     q_.setSize(n);
+    epsilonR_.setSize(n);
     semiAxes_.setSize(n);
     orientation_.setSize(n);
     omegaBody_.setSize(n);
 
     const scalar rho0 =
         this->owner().constProps().dict().template get<scalar>("rho0");
+    const scalar epsilonR0 = this->owner().constProps().epsilonR0();
 
     forAll(parcels, i)
     {
@@ -161,6 +163,7 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
 
         rho_[i] = readParcelScalar(pd, i, "rho", true, &rho0);
         q_[i] = readParcelScalar(pd, i, "q", false);
+        epsilonR_[i] = readParcelScalar(pd, i, "epsilonR", true, &epsilonR0);
     }
 
     this->volumeTotal_ = constant::mathematical::pi/6*sum(pow3(d_));
@@ -197,6 +200,7 @@ Foam::ExplicitParcelInjection<CloudType>::ExplicitParcelInjection
     d_(im.d_),
     rho_(im.rho_),
     q_(im.q_),
+    epsilonR_(im.epsilonR_),
     semiAxes_(im.semiAxes_),
     orientation_(im.orientation_),
     omegaBody_(im.omegaBody_),
@@ -300,6 +304,7 @@ void Foam::ExplicitParcelInjection<CloudType>::setProperties
     }
     parcel.rho() = rho_[parcelI];
     parcel.q() = q_[parcelI];
+    parcel.epsilonR() = epsilonR_[parcelI];
     parcel.orientation() = orientation_[parcelI];
     parcel.angularMomentum() = rigidBodyRotation::angularMomentum
     (

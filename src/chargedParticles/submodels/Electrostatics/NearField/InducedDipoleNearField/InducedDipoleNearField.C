@@ -1,0 +1,340 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "InducedDipoleNearField.H"
+#include "ElectrostaticsModel.H"
+#include "inducedDipole.H"
+#include "ListListOps.H"
+#include "Pstream.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::vector Foam::InducedDipoleNearField<CloudType>::depolarisationFactors
+(
+    const vector& semiAxes
+) const
+{
+    const scalar sMax = cmptMax(semiAxes);
+    if (cmptMin(semiAxes) == sMax)
+    {
+        return vector::uniform(1.0/3.0);
+    }
+    const std::array<scalar, 3> key
+    {{semiAxes.x()/sMax, semiAxes.y()/sMax, semiAxes.z()/sMax}};
+    auto iter = depolarisation_.find(key);
+    if (iter == depolarisation_.end())
+    {
+        iter = depolarisation_.emplace
+        (
+            key,
+            inducedDipole::depolarisationFactors
+            (
+                vector(key[0], key[1], key[2])
+            )
+        ).first;
+    }
+    return iter->second;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::InducedDipoleNearField<CloudType>::readPositive
+(
+    const word& key,
+    const scalar deflt
+) const
+{
+    const scalar v = this->dict().template lookupOrDefault<scalar>(key, deflt);
+    if (!(v > 0) || !std::isfinite(v))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry " << key << " = " << v << " in "
+            << this->dict().name().c_str() << " is out of range: it must"
+            << " be finite and > 0" << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    NearFieldModel<CloudType>(dict, owner),
+    rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
+    tolerance_(readPositive("tolerance", 1e-10)),
+    maxIter_(label(readPositive("maxIter", 500))),
+    contactWeight_
+    (
+        Foam::pow
+        (
+            owner.constProps().dict().template lookupOrDefault<scalar>
+            (
+                "stiffnessRatio",
+                1
+            ),
+            0.4
+        )
+    ),
+    energy_(0),
+    rNear_(rNearGiven_),
+    nPolarisable_(0),
+    nPairs_(0),
+    iterations_(0),
+    residual_(0)
+{
+    Info<< "    Induced dipoles within rNear = "
+        << (rNearGiven_ > 0 ? Foam::name(rNearGiven_) + " m" : "3 bounding"
+            " diameters of the largest polarisable parcel").c_str()
+        << ", tolerance " << tolerance_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::correct
+(
+    const ElectrostaticsModel<CloudType>& farField
+)
+{
+    CloudType& cloud = this->owner();
+    const scalar kappa0 = farField.mediumEpsilonR();
+    const label nProcs = Pstream::nProcs();
+    const label me = Pstream::myProcNo();
+    const label n = cloud.size();
+
+    // This processor's parcels: centres, charges, polarisabilities, the
+    // far field at them, the last dipoles and the ids
+    List<pointField> allX(nProcs);
+    List<scalarField> allQ(nProcs);
+    List<tensorField> allA(nProcs);
+    List<vectorField> allE(nProcs);
+    List<vectorField> allP(nProcs);
+    List<labelList> allId(nProcs);
+    allX[me].setSize(n);
+    allQ[me].setSize(n);
+    allA[me].setSize(n);
+    allE[me].setSize(n);
+    allP[me].setSize(n);
+    allId[me].setSize(2*n);
+
+    scalar dMax = 0;
+    label nPolar = 0;
+    label i = 0;
+    for (const auto& p : cloud)
+    {
+        if (p.epsilonR() < kappa0)
+        {
+            FatalErrorInFunction
+                << "Parcel (origProc " << p.origProc() << ", origId "
+                << p.origId() << ") has epsilonR " << p.epsilonR()
+                << " below the medium's " << kappa0 << ": the induced-"
+                << "dipole near field needs epsilonR >= the far field's"
+                << " epsilonR (" << this->dict().name().c_str() << ")"
+                << exit(FatalError);
+        }
+        allX[me][i] = p.centre();
+        allQ[me][i] = p.q();
+        allE[me][i] = p.E();
+        allP[me][i] = p.dipole();
+        allId[me][2*i] = p.origProc();
+        allId[me][2*i + 1] = p.origId();
+        if (p.epsilonR() != kappa0)
+        {
+            allA[me][i] = inducedDipole::polarisability
+            (
+                p.semiAxes(),
+                depolarisationFactors(p.semiAxes()),
+                p.orientation().R(),
+                p.epsilonR(),
+                kappa0
+            );
+            dMax = max(dMax, 2*cmptMax(p.semiAxes()));
+            ++nPolar;
+        }
+        else
+        {
+            allA[me][i] = Zero;
+        }
+        ++i;
+    }
+    reduce(dMax, maxOp<scalar>());
+    reduce(nPolar, sumOp<label>());
+    nPolarisable_ = nPolar;
+
+    // Nothing polarisable: no dipoles, no torques, the far field stands
+    if (nPolar == 0)
+    {
+        for (auto& p : cloud)
+        {
+            p.tE() = Zero;
+            p.dipole() = Zero;
+        }
+        energy_ = 0;
+        nPairs_ = 0;
+        iterations_ = 0;
+        residual_ = 0;
+        return;
+    }
+
+    rNear_ = rNearGiven_ > 0 ? rNearGiven_ : 3*dMax;
+    if (!(rNear_ >= dMax))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry rNear = " << rNear_ << " in "
+            << this->dict().name().c_str() << " is below the bounding"
+            << " diameter " << dMax << " of the largest polarisable parcel:"
+            << " pairs in contact would be left out" << exit(FatalIOError);
+    }
+    const vector L(farField.periodicBox());
+    if (cmptMax(L) > 0 && !(2*rNear_ < cmptMin(L)))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry rNear = " << rNear_ << " in "
+            << this->dict().name().c_str() << " must be below half the"
+            << " periodic box edge " << cmptMin(L)
+            << (rNearGiven_ > 0 ? "" : " (the default, 3 bounding diameters"
+                " of the largest polarisable parcel: give a smaller one)")
+            << exit(FatalIOError);
+    }
+
+    // Every processor gets every parcel (see ElectrostaticsModel)
+    Pstream::gatherList(allX);
+    Pstream::scatterList(allX);
+    Pstream::gatherList(allQ);
+    Pstream::scatterList(allQ);
+    Pstream::gatherList(allA);
+    Pstream::scatterList(allA);
+    Pstream::gatherList(allE);
+    Pstream::scatterList(allE);
+    Pstream::gatherList(allP);
+    Pstream::scatterList(allP);
+    Pstream::gatherList(allId);
+    Pstream::scatterList(allId);
+
+    label myStart = 0;
+    for (label proci = 0; proci < me; ++proci)
+    {
+        myStart += allX[proci].size();
+    }
+    const pointField x(ListListOps::combine<pointField>(allX, accessOp<pointField>()));
+    const scalarField q(ListListOps::combine<scalarField>(allQ, accessOp<scalarField>()));
+    const tensorField A(ListListOps::combine<tensorField>(allA, accessOp<tensorField>()));
+    const vectorField E0(ListListOps::combine<vectorField>(allE, accessOp<vectorField>()));
+    const vectorField P0(ListListOps::combine<vectorField>(allP, accessOp<vectorField>()));
+    const labelList ids(ListListOps::combine<labelList>(allId, accessOp<labelList>()));
+    const label N = x.size();
+
+    // One order for all processors and decompositions: by (origProc,
+    // origId); rank[k]: the place of gathered parcel k in it
+    labelList order(identity(N));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&](const label a, const label b)
+        {
+            return
+                ids[2*a] < ids[2*b]
+             || (ids[2*a] == ids[2*b] && ids[2*a + 1] < ids[2*b + 1]);
+        }
+    );
+    labelList rank(N);
+    forAll(order, k)
+    {
+        rank[order[k]] = k;
+    }
+    const pointField xs(x, order);
+    const scalarField qs(q, order);
+    const tensorField As(A, order);
+    const vectorField E0s(E0, order);
+    const vectorField P0s(P0, order);
+
+    inducedDipole dipoles(kappa0, tolerance_, maxIter_);
+    dipoles.setParticles(xs, qs, As, E0s);
+    dipoles.countChargeFields(false);
+    dipoles.setCutoff(rNear_);
+    dipoles.setPeriod(L);
+    dipoles.setInitialDipoles(P0s);
+
+    // Pairs in contact, from the collision records (Ruan Eq. 44)
+    if (contactWeight_ != 1)
+    {
+        HashTable<label, labelPair, labelPair::Hash<>> where(2*N);
+        for (label k = 0; k < N; ++k)
+        {
+            where.insert(labelPair(ids[2*k], ids[2*k + 1]), rank[k]);
+        }
+        DynamicList<labelPair> contacts;
+        i = 0;
+        for (const auto& p : cloud)
+        {
+            const label gi = rank[myStart + i];
+            for (const auto& record : p.collisionRecords().pairRecords())
+            {
+                const auto iter = where.cfind
+                (
+                    labelPair(record.origProcOfOther(), record.origIdOfOther())
+                );
+                if (iter.found())
+                {
+                    contacts.append(labelPair(gi, iter.val()));
+                }
+            }
+            ++i;
+        }
+        List<List<labelPair>> allContacts(nProcs);
+        allContacts[me].transfer(contacts);
+        Pstream::gatherList(allContacts);
+        Pstream::scatterList(allContacts);
+        dipoles.setPairWeights
+        (
+            ListListOps::combine<List<labelPair>>
+            (
+                allContacts, accessOp<List<labelPair>>()
+            ),
+            contactWeight_
+        );
+    }
+
+    dipoles.solve();
+
+    i = 0;
+    for (auto& p : cloud)
+    {
+        const label g = rank[myStart + i];
+        p.E() = dipoles.fields()[g];
+        p.fE() += dipoles.forceIncrements()[g];
+        p.tE() = dipoles.torques()[g];
+        p.dipole() = dipoles.dipoles()[g];
+        ++i;
+    }
+
+    energy_ = dipoles.externalEnergy();
+    nPairs_ = dipoles.pairs().size();
+    iterations_ = dipoles.iterations();
+    residual_ = dipoles.residual();
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::info() const
+{
+    Info<< "    Induced dipoles                 = " << nPolarisable_
+        << " polarisable, " << nPairs_ << " pairs within rNear " << rNear_
+        << " m, " << iterations_ << " CG iterations (residual "
+        << residual_ << ")" << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,63 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "NearFieldModel.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::NearFieldModel<CloudType>::NearFieldModel
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    owner_(owner),
+    dict_(dict)
+{}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::autoPtr<Foam::NearFieldModel<CloudType>>
+Foam::NearFieldModel<CloudType>::New
+(
+    const dictionary& farFieldCoeffs,
+    CloudType& owner
+)
+{
+    if (farFieldCoeffs.found("nearField") && !farFieldCoeffs.isDict("nearField"))
+    {
+        FatalIOErrorInFunction(farFieldCoeffs)
+            << "Entry nearField in " << farFieldCoeffs.name().c_str()
+            << " must be a dictionary: nearField { type none|"
+            << "inducedDipole; }" << exit(FatalIOError);
+    }
+    const dictionary& dict = farFieldCoeffs.subOrEmptyDict("nearField");
+    const word modelType(dict.template lookupOrDefault<word>("type", "none"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "type",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    if (modelType != "none")
+    {
+        Info<< "    Near field " << modelType << endl;
+    }
+
+    return autoPtr<NearFieldModel<CloudType>>(cstrIter()(dict, owner));
+}
+
+
+// ************************************************************************* //
