@@ -111,3 +111,126 @@ copyCase dielectricSpheres "$work/attraction"
     esac
     check polarisation.attractionPlot "(attraction.png written)" test -s attraction.png
 )
+
+# A time-dependent applied field (Function1 sine): one charged sphere in
+# E(t) = E0 sin(w t) x moves as x(t) = x0 + q E0/(m w) (t - sin(w t)/w)
+copyCase twoChargedSpheres "$work/sine"
+cd "$work/sine" || exit 1
+$PY - <<'PYEOF'
+import re
+p = "constant/cloudProperties"
+s = open(p).read()
+s = re.sub(r"\{ position \( 0.5e-3 0 0\);.*?\}\n", "", s)
+s = s.replace("electrostaticsModel directCoulomb;",
+              "electrostaticsModel directCoulomb;\n"
+              "    appliedField sine;\n"
+              "    appliedFieldCoeffs { frequency 200; amplitude 1; scale (1e4 0 0); level (0 0 0); }")
+open(p, "w").write(s)
+PYEOF
+setEndTime 5e-3
+run blockMesh blockMesh && run solver chargedParticleFoam \
+    || fail "polarisation.sineField (solver failed)"
+$PY - <<'PYEOF'
+import glob, math
+import numpy as np
+f = sorted(glob.glob("postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat"))[0]
+h = np.loadtxt(f, ndmin=2)
+t, x = h[:, 0], h[:, 3]
+q, E0, w = 1e-12, 1e4, 2*math.pi*200
+m = 1000*math.pi/6*1e-4**3
+xa = -0.5e-3 + q*E0/(m*w)*(t - np.sin(w*t)/w)
+err = np.abs(x - xa).max()/np.abs(xa - xa[0]).max()
+print("%s: polarisation.sineField (x(t) against the analytic motion in E0 sin(wt):"
+      " max error %.2e of the displacement, tol 1e-4)" % ("PASS" if err < 1e-4 else "FAIL", err))
+PYEOF
+
+# The near field on other far fields:
+# - cutoffCoulomb with a cutoff beyond the scene = directCoulomb, with the
+#   near field on top (same forces and torques to round-off);
+# - periodic (ewald): two prolates across the periodic boundary x = 0 and
+#   the same two shifted by half a box (adjacent, inside): a periodic scene
+#   is translation invariant, so the near field must pair them by the
+#   minimum image (forces and torques equal to the Ewald sum's accuracy).
+history()   # history <case>: fE and tE of the first step, one row per parcel
+{
+    $PY - "$1" <<'PYEOF'
+import glob, sys
+import numpy as np
+f = sorted(glob.glob(sys.argv[1] + "/postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat"))[0]
+header = open(f).readlines()[1].lstrip("# ").split()
+h = np.loadtxt(f, ndmin=2)
+h = h[h[:, 0] == h[0, 0]]
+c = [header.index(k) for k in ("fEx", "fEy", "fEz", "tEx", "tEy", "tEz")]
+np.savetxt(sys.argv[1] + "/forces.txt", h[:, c])
+PYEOF
+}
+compareForces()     # compareForces <name> <caseA> <caseB> <tol>
+{
+    $PY - "$@" <<'PYEOF'
+import sys
+import numpy as np
+name, a, b, tol = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4])
+A, B = np.loadtxt(a + "/forces.txt", ndmin=2), np.loadtxt(b + "/forces.txt", ndmin=2)
+eF = np.abs(A[:, :3] - B[:, :3]).max()/np.abs(A[:, :3]).max()
+eT = np.abs(A[:, 3:] - B[:, 3:]).max()/np.abs(A[:, 3:]).max()
+ok = eF < tol and eT < tol and np.abs(A[:, 3:]).max() > 0
+print("%s: polarisation.%s (force difference %.2e, torque %.2e of the largest; tol %g)"
+      % ("PASS" if ok else "FAIL", name, eF, eT, tol))
+PYEOF
+}
+
+for far in direct cutoff
+do
+    copyCase twoChargedSpheres "$work/far-$far"
+    (
+        cd "$work/far-$far" || exit 1
+        $PY "$tools/polarisationStatic.py" write . prolateOblique
+        [ $far = cutoff ] && sed -i 's/electrostaticsModel directCoulomb;/electrostaticsModel cutoffCoulomb;/; s/directCoulombCoeffs/cutoffCoulombCoeffs/; s/epsilonR 1;/epsilonR 1; rCut 1;/' constant/cloudProperties
+        setEndTime 1e-6
+        run blockMesh blockMesh && run solver chargedParticleFoam && history .
+    ) || fail "polarisation.cutoffFarField (run failed, see $work/far-$far)"
+done
+compareForces cutoffFarField "$work/far-direct" "$work/far-cutoff" 1e-12
+
+for shift in 0 0.5
+do
+    copyCase twoChargedSpheres "$work/periodic-$shift"
+    (
+        cd "$work/periodic-$shift" || exit 1
+        $PY - $shift <<'PYEOF'
+import re, sys
+shift = float(sys.argv[1])
+p = "system/blockMeshDict"
+s = open(p).read()
+s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
+s = re.sub(r"vertices\s*\(.*?\);", "vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);", s, flags=re.S)
+s = re.sub(r"blocks\s*\(.*?\);", "blocks\n(\n    hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1)\n);", s, flags=re.S)
+s = re.sub(r"boundary\s*\(.*\);", """boundary
+(
+    x0 { type cyclic; neighbourPatch x1; faces ((0 4 7 3)); }
+    x1 { type cyclic; neighbourPatch x0; faces ((1 2 6 5)); }
+    y0 { type cyclic; neighbourPatch y1; faces ((0 1 5 4)); }
+    y1 { type cyclic; neighbourPatch y0; faces ((3 7 6 2)); }
+    z0 { type cyclic; neighbourPatch z1; faces ((0 3 2 1)); }
+    z1 { type cyclic; neighbourPatch z0; faces ((4 5 6 7)); }
+);""", s, flags=re.S)
+open(p, "w").write(s)
+# Two prolates 0.1 apart across x = 0 (shift 0) or at 0.45, 0.55 (shift 0.5)
+xs = [(0.95 + shift) % 1.0, (0.05 + shift) % 1.0]
+parcels = "\n".join(
+    "                { position (%.12g %g %g); semiAxes (0.04 0.02 0.02); eulerAngles (%g 20 0); epsilonR 6; rho 1e30; q %g; }"
+    % (x, 0.5 + 0.01*i, 0.5, 30 + 40*i, (1e-9, -2e-9)[i]) for i, x in enumerate(xs))
+p = "constant/cloudProperties"
+s = open(p).read()
+s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
+s = re.sub(r"electrostaticsModel\s+\w+;", "electrostaticsModel periodic;\n    appliedField (0 1e3 0);\n"
+           "    periodicCoeffs { method ewald; nearField { type inducedDipole; tolerance 1e-14; } }", s)
+open(p, "w").write(s)
+PYEOF
+        setEndTime 1e-6
+        run blockMesh blockMesh && run solver chargedParticleFoam && history .
+    ) || fail "polarisation.periodicNearField (run failed, see $work/periodic-$shift)"
+done
+check polarisation.periodicPairs "(the near field pairs the prolates across x = 0)" \
+    grep -q "2 polarisable, 1 pairs" "$work/periodic-0/log.solver"
+compareForces periodicNearField "$work/periodic-0" "$work/periodic-0.5" 1e-8

@@ -126,29 +126,29 @@ void Foam::inducedDipole::findPairs()
 
     if (!(rNear_ > 0))
     {
-        DynamicList<pair> all(n*(n - 1)/2);
         for (label i = 0; i < n; ++i)
         {
             for (label j = i + 1; j < n; ++j)
             {
                 if (hasTerms(i, j))
                 {
-                    all.append
+                    pairs_.append
                     (
                         pair{i, j, minImage(x_[i] - x_[j]), weight(i, j)}
                     );
                 }
             }
         }
-        pairs_.transfer(all);
     }
     else
     {
         // Sources: the particles and, in a periodic box, their images
         // within rNear of the particles' bounding box (rNear < L/2: each
         // pair is then met once from each side)
-        DynamicList<point> xS(x_);
-        DynamicList<label> ofSource(identity(n));
+        DynamicList<point>& xS = xS_;
+        DynamicList<label>& ofSource = ofSource_;
+        xS = x_;
+        ofSource = identity(n);
         if (cmptMax(period_) > 0 && n)
         {
             point lo(x_[0]), hi(x_[0]);
@@ -195,7 +195,6 @@ void Foam::inducedDipole::findPairs()
             }
         }
 
-        DynamicList<pair> near(8*n);
         forPairsWithinCutoff
         (
             x_, xS, rNear_, 0,
@@ -204,11 +203,10 @@ void Foam::inducedDipole::findPairs()
                 const label j = ofSource[s];
                 if (t < j && hasTerms(t, j))
                 {
-                    near.append(pair{t, j, r, weight(t, j)});
+                    pairs_.append(pair{t, j, r, weight(t, j)});
                 }
             }
         );
-        pairs_.transfer(near);
     }
 
     for (const pair& ij : pairs_)
@@ -224,8 +222,9 @@ void Foam::inducedDipole::findPairs()
 }
 
 
-void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
+void Foam::inducedDipole::solveDipoles()
 {
+    const List<vector>& Ec = Ec_;
     // Hand-written preconditioned CG rather than an Eigen sparse solver:
     // the operator is applied from the pair list with 3x3 blocks and no
     // assembly (the pairs change every step), and the block-diagonal
@@ -234,7 +233,9 @@ void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
     const scalar k = 1/(4*pi*pairwiseCoulomb::vacuumPermittivity*kappa0_);
 
     boolList polar(n);
-    List<tensor> alphaInv(n, Zero);
+    DynamicList<tensor>& alphaInv = alphaInv_;
+    alphaInv.resize(n);
+    alphaInv = Zero;
     forAll(alpha_, i)
     {
         polar[i] = cmptMax(cmptMag(alpha_[i])) > 0;
@@ -246,8 +247,10 @@ void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
 
     // Dipole tensors T = k (3 r r/r^2 - I)/r^3 of the pairs of two
     // polarisable particles
-    DynamicList<label> tPairs(pairs_.size());
-    DynamicList<symmTensor> T(pairs_.size());
+    DynamicList<label>& tPairs = tPairs_;
+    DynamicList<symmTensor>& T = T_;
+    tPairs.clear();
+    T.clear();
     forAll(pairs_, pairi)
     {
         const pair& ij = pairs_[pairi];
@@ -283,7 +286,8 @@ void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
         return s;
     };
 
-    List<vector> b(n);
+    DynamicList<vector>& b = b_;
+    b.resize(n);
     forAll(b, i)
     {
         b[i] = polar[i] ? Ec[i] : vector::zero;
@@ -306,7 +310,14 @@ void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
         }
     }
 
-    List<vector> r(n), z(n), d(n), Ad(n);
+    DynamicList<vector>& r = r_;
+    DynamicList<vector>& z = z_;
+    DynamicList<vector>& d = d_;
+    DynamicList<vector>& Ad = Ad_;
+    r.resize(n);
+    z.resize(n);
+    d.resize(n);
+    Ad.resize(n);
     apply(p_, Ad);
     forAll(r, i)
     {
@@ -317,7 +328,8 @@ void Foam::inducedDipole::solveDipoles(const List<vector>& Ec)
 
     // Converged when the preconditioned residual norm r.alpha.r is below
     // tolerance^2 of the right-hand side's b.alpha.b (scale free)
-    List<vector> ab(n);
+    DynamicList<vector>& ab = ab_;
+    ab.resize(n);
     forAll(ab, i)
     {
         ab[i] = alpha_[i] & b[i];
@@ -445,6 +457,18 @@ void Foam::inducedDipole::setParticles
 }
 
 
+void Foam::inducedDipole::setMediumPermittivity(const scalar kappa0)
+{
+    if (!(kappa0 > 0))
+    {
+        FatalErrorInFunction
+            << "kappa0 = " << kappa0 << " out of range (> 0)"
+            << exit(FatalError);
+    }
+    kappa0_ = kappa0;
+}
+
+
 void Foam::inducedDipole::setPairWeights
 (
     const UList<labelPair>& pairs,
@@ -473,7 +497,8 @@ Foam::label Foam::inducedDipole::solve()
 
     // Field of the charges and the external field (Ec, the right-hand
     // side of Eqs. 46-47), and the charges' pair energy
-    List<vector> Ec(n);
+    DynamicList<vector>& Ec = Ec_;
+    Ec.resize(n);
     forAll(Ec, i)
     {
         Ec[i] = E0_[i] + Eext_;
@@ -492,7 +517,7 @@ Foam::label Foam::inducedDipole::solve()
         }
     }
 
-    solveDipoles(Ec);
+    solveDipoles();
 
     // Total fields, forces (Eq. 45) and torques, pair by pair: for the
     // pair (i, j), r = x_i - x_j, the field of j at i and its gradient

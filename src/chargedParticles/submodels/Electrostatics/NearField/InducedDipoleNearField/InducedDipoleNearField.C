@@ -71,7 +71,7 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
 :
     NearFieldModel<CloudType>(dict, owner),
     rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
-    tolerance_(readPositive("tolerance", 1e-10)),
+    tolerance_(readPositive("tolerance", 1e-8)),
     maxIter_(label(readPositive("maxIter", 500))),
     contactWeight_
     (
@@ -85,6 +85,7 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
             0.4
         )
     ),
+    dipoles_(1, tolerance_, maxIter_),
     energy_(0),
     rNear_(rNearGiven_),
     nPolarisable_(0),
@@ -93,7 +94,7 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
     residual_(0)
 {
     Info<< "    Induced dipoles within rNear = "
-        << (rNearGiven_ > 0 ? Foam::name(rNearGiven_) + " m" : "3 bounding"
+        << (rNearGiven_ > 0 ? Foam::name(rNearGiven_) + " m" : "2 bounding"
             " diameters of the largest polarisable parcel").c_str()
         << ", tolerance " << tolerance_ << endl;
 }
@@ -187,7 +188,7 @@ void Foam::InducedDipoleNearField<CloudType>::correct
         return;
     }
 
-    rNear_ = rNearGiven_ > 0 ? rNearGiven_ : 3*dMax;
+    rNear_ = rNearGiven_ > 0 ? rNearGiven_ : 2*dMax;
     if (!(rNear_ >= dMax))
     {
         FatalIOErrorInFunction(this->dict())
@@ -203,7 +204,7 @@ void Foam::InducedDipoleNearField<CloudType>::correct
             << "Entry rNear = " << rNear_ << " in "
             << this->dict().name().c_str() << " must be below half the"
             << " periodic box edge " << cmptMin(L)
-            << (rNearGiven_ > 0 ? "" : " (the default, 3 bounding diameters"
+            << (rNearGiven_ > 0 ? "" : " (the default, 2 bounding diameters"
                 " of the largest polarisable parcel: give a smaller one)")
             << exit(FatalIOError);
     }
@@ -260,7 +261,8 @@ void Foam::InducedDipoleNearField<CloudType>::correct
     const vectorField E0s(E0, order);
     const vectorField P0s(P0, order);
 
-    inducedDipole dipoles(kappa0, tolerance_, maxIter_);
+    inducedDipole& dipoles = dipoles_;
+    dipoles.setMediumPermittivity(kappa0);
     dipoles.setParticles(xs, qs, As, E0s);
     dipoles.countChargeFields(false);
     dipoles.setCutoff(rNear_);
