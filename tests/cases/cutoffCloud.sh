@@ -7,23 +7,11 @@
 
 copyCase twoChargedSpheres "$work/cut"
 cd "$work/cut" || exit 1
+$PY "$tools/unitBoxMesh.py" wall
 $PY - <<'PYEOF'
 import re
 import numpy as np
 rng = np.random.default_rng(5)
-p = "system/blockMeshDict"
-s = open(p).read()
-s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
-s = re.sub(r"vertices\s*\(.*?\);", """vertices
-(
-    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)
-);""", s, flags=re.S)
-s = re.sub(r"blocks\s*\(.*?\);", "blocks\n(\n    hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1)\n);", s, flags=re.S)
-s = re.sub(r"boundary\s*\(.*\);", """boundary
-(
-    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }
-);""", s, flags=re.S)
-open(p, "w").write(s)
 x = 0.05 + 0.9*rng.random((60, 3))
 q = 1e-9*(2*rng.random(60) - 1)
 np.savetxt("charges.txt", np.column_stack([x, q]))

@@ -16,23 +16,11 @@ $PY "$tools/groundedBox.py" --selftest
 
 copyCase twoChargedSpheres "$work/r0.3"
 cd "$work/r0.3" || exit 1
+$PY "$tools/unitBoxMesh.py" wall
 $PY - <<'PYEOF'
 import re
 import numpy as np
 rng = np.random.default_rng(11)
-p = "system/blockMeshDict"
-s = open(p).read()
-s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
-s = re.sub(r"vertices\s*\(.*?\);", """vertices
-(
-    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)
-);""", s, flags=re.S)
-s = re.sub(r"blocks\s*\(.*?\);", "blocks\n(\n    hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1)\n);", s, flags=re.S)
-s = re.sub(r"boundary\s*\(.*\);", """boundary
-(
-    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }
-);""", s, flags=re.S)
-open(p, "w").write(s)
 # charges within 0.02 m of the walls too (and near edges and corners)
 x = 0.02 + 0.96*rng.random((50, 3))
 x[:6] = np.where(rng.random((6, 3)) < 0.5, 0.03, 0.97)*np.ones((6, 3))

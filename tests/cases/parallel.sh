@@ -40,10 +40,7 @@ run reconstructPar reconstructPar -latestTime \
 
 # Particles really crossed the processor boundary: processor1 ends up
 # holding particles injected on processor0 (origProcId 0)
-crossed=$($PY -c "
-import sys; sys.path.insert(0, '$top/etc/python')
-from foamLagrangian import read_field
-print(int((read_field('processor1/0.004/lagrangian/cloud/origProcId') == 0).sum()))")
+crossed=$(movedToProcessor1 0.004)
 check parallel.transfer "($crossed particles moved from processor0 to processor1)" \
     test "${crossed:-0}" -gt 0
 

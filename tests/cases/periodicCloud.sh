@@ -7,28 +7,11 @@
 
 copyCase twoChargedSpheres "$work/p3m"
 cd "$work/p3m" || exit 1
+$PY "$tools/unitBoxMesh.py" cyclic
 $PY - <<'PYEOF'
 import re
 import numpy as np
 rng = np.random.default_rng(3)
-p = "system/blockMeshDict"
-s = open(p).read()
-s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
-s = re.sub(r"vertices\s*\(.*?\);", """vertices
-(
-    (0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 1) (1 0 1) (1 1 1) (0 1 1)
-);""", s, flags=re.S)
-s = re.sub(r"blocks\s*\(.*?\);", "blocks\n(\n    hex (0 1 2 3 4 5 6 7) (4 4 4) simpleGrading (1 1 1)\n);", s, flags=re.S)
-s = re.sub(r"boundary\s*\(.*\);", """boundary
-(
-    x0 { type cyclic; neighbourPatch x1; faces ((0 4 7 3)); }
-    x1 { type cyclic; neighbourPatch x0; faces ((1 2 6 5)); }
-    y0 { type cyclic; neighbourPatch y1; faces ((0 1 5 4)); }
-    y1 { type cyclic; neighbourPatch y0; faces ((3 7 6 2)); }
-    z0 { type cyclic; neighbourPatch z1; faces ((0 3 2 1)); }
-    z1 { type cyclic; neighbourPatch z0; faces ((4 5 6 7)); }
-);""", s, flags=re.S)
-open(p, "w").write(s)
 x = 0.02 + 0.96*rng.random((40, 3))
 np.savetxt("positions.txt", x)
 p = "constant/cloudProperties"
