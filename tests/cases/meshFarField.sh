@@ -14,7 +14,7 @@ import numpy as np
 work, top = sys.argv[1], sys.argv[2]
 sys.path.insert(0, top + "/applications/benchmarks/meshFarField")
 sys.path.insert(0, top + "/tests/tools")
-from farFieldCase import FarFieldCase
+from farFieldCase import FarFieldCase, ELECTRODES, electrodesPhi
 import groundedBox as gb
 
 def report(name, ok, detail):
@@ -93,15 +93,8 @@ report("periodic", res[32] < 0.02 and res[32] < res[16]/2.5,
 
 # 7. Applied field: electrodes at 0 V and 100 V 1 m apart, insulating
 #    sides; two neutral probes see E = (-100, 0, 0) V/m
-bnd = """
-    left  { type wall; faces ((0 4 7 3)); }
-    right { type wall; faces ((1 2 6 5)); }
-    sides { type patch; faces ((0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }"""
-phi = """    left  { type fixedValue; value uniform 0; }
-    right { type fixedValue; value uniform 100; }
-    sides { type zeroGradient; }"""
 xe = np.array([[0.3, 0.4, 0.5], [0.7, 0.6, 0.2]]); qe = np.zeros(2)
-E = run("electrodes", xe, qe, 8, boundary=bnd, Phi=phi)
+E = run("electrodes", xe, qe, 8, boundary=ELECTRODES, Phi=electrodesPhi(100))
 if E is None:
     report("appliedField", False, "run failed")
 else:

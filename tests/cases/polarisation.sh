@@ -217,3 +217,37 @@ done
 check polarisation.periodicPairs "(the near field pairs the prolates across x = 0)" \
     grep -q "2 polarisable, 1 pairs" "$work/periodic-0/log.solver"
 compareForces periodicNearField "$work/periodic-0" "$work/periodic-0.5" 1e-8
+
+# meshPoisson: the electrodes give the applied field, the near field adds
+# the dipoles. Two neutral dielectric spheres (radius a, epsilonR 5) on a
+# line along the field E0 of electrodes at 0 and 100 V, 1 m apart, centres
+# s apart: p = alpha E0/(1 - 2 alpha/(4 pi eps0 s^3)), alpha = 4 pi eps0
+# a^3 (k - 1)/(k + 2), and each attracts the other with 6 p^2/(4 pi eps0 s^4)
+# (the mutually induced point dipoles written out, not the kernel).
+$PY - "$work" "$top" <<'PYEOF'
+import math, sys
+import numpy as np
+work, top = sys.argv[1], sys.argv[2]
+sys.path.insert(0, top + "/applications/benchmarks/meshFarField")
+from farFieldCase import FarFieldCase, ELECTRODES, electrodesPhi
+a, k, s = 0.5e-6, 5.0, 1.6e-6
+x = np.array([[0.5, 0.41, 0.52], [0.5 + s, 0.41, 0.52]])
+c = FarFieldCase(work + "/meshPoisson", x, np.zeros(2), 1.0, 8, "meshPoisson",
+                 "radius 0.3; nearField { type inducedDipole; tolerance 1e-14; }",
+                 boundary=ELECTRODES, Phi=electrodesPhi(100), d=2*a, parcelEntries="epsilonR %g;" % k)
+try:
+    c.run()
+    E, fE = c.fields()
+except RuntimeError as e:
+    print("FAIL: polarisation.meshPoissonNearField (%s)" % e)
+    sys.exit(0)
+eps0 = 8.8541878128e-12
+alpha = 4*math.pi*eps0*a**3*(k - 1)/(k + 2)
+p = alpha*100/(1 - 2*alpha/(4*math.pi*eps0*s**3))
+F = 6*p*p/(4*math.pi*eps0*s**4)
+ref = np.array([[F, 0, 0], [-F, 0, 0]])
+err = np.abs(fE - ref).max()/F
+print("%s: polarisation.meshPoissonNearField (neutral dielectric pair along the"
+      " electrodes' field: force %.4e N vs mutual point dipoles %.4e N, max error"
+      " %.1e of it, tol 1e-6)" % ("PASS" if err < 1e-6 else "FAIL", fE[0, 0], F, err))
+PYEOF

@@ -5,17 +5,25 @@ References computed here, independently of the C++ code:
   - Ruan Eqs. 49-50: torque on a dielectric ellipsoid in a uniform field,
     depolarisation factors by numerical quadrature;
   - Coulomb's law for the two-sphere forces (kappa_p -> 1 limit);
-  - the exact two-sphere multipole series (twoSphereExact.py).
+  - the exact two-sphere multipole series (etc/python/twoDielectricSpheres.py).
 """
 import glob, math, os
+import sys
 import numpy as np
-import twoSphereExact
+sys.path.insert(0, os.path.join(os.environ.get("CHARGEDFOAM_DIR", ""), "etc", "python"))
+import twoDielectricSpheres
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 eps0 = 8.8541878128e-12
 PP = "postProcessing"
+
+
+def exactForce(gap, kp, sgn):
+    # R = 1, free surface charge density 1 and sgn: Q = 4 pi, sgn 4 pi
+    Q = 4 * math.pi
+    return twoDielectricSpheres.force(Q, sgn * Q, 1.0, 1.0, 2 + gap, kp, kp)
 
 
 def load(path):
@@ -93,7 +101,7 @@ if cases:
         for i, g in enumerate(gap):
             fl = lo[i, 10] / F0
             fh = hi[i, 10] / F0 if hi is not None else float("nan")
-            fe = twoSphereExact.force(g, kp, 1, sgn) / F0
+            fe = exactForce(g, kp, sgn) / F0
             fb = fh if hi is not None else fl
             print("| %d | %s | %.2f | %.4f | %.4f | %.4f | %.4f | %+.4f | %.4f | %.4f |"
                   % (kp, "like" if like else "opposite", g, fl, fh,
@@ -104,7 +112,7 @@ if cases:
         ax.plot(gap, best[:, 10] / F0, "o-", label="BEM kp %d" % kp)
         ax.plot(gap, dm[:, 10] / F0, "--", label="dipole kp %d" % kp)
         ge = np.linspace(0.05, 3, 40)
-        ax.plot(ge, [twoSphereExact.force(x, kp, 1, sgn) / F0 for x in ge], ":", label="exact kp %d" % kp)
+        ax.plot(ge, [exactForce(x, kp, sgn) / F0 for x in ge], ":", label="exact kp %d" % kp)
     for k, ax in enumerate(axs):
         g = np.linspace(0.05, 3, 100)
         ax.plot(g, (1 if k == 0 else -1) * 4 * math.pi / (eps0 * (2 + g) ** 2) / F0, "k-", label="Coulomb")

@@ -36,6 +36,20 @@ HEADER = """FoamFile
 """
 
 
+# Electrodes: x = 0 at 0 V (patch left), x = L at `right` V, insulating
+# sides; pass as FarFieldCase(..., boundary=ELECTRODES, Phi=electrodesPhi(V))
+ELECTRODES = """
+    left  { type wall; faces ((0 4 7 3)); }
+    right { type wall; faces ((1 2 6 5)); }
+    sides { type patch; faces ((0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }"""
+
+
+def electrodesPhi(right):
+    return """    left  { type fixedValue; value uniform 0; }
+    right { type fixedValue; value uniform %r; }
+    sides { type zeroGradient; }""" % right
+
+
 def _write(path, obj, body, cls="dictionary"):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as f:
@@ -44,7 +58,8 @@ def _write(path, obj, body, cls="dictionary"):
 
 class FarFieldCase:
     def __init__(self, path, x, q, L, n, model, coeffs="", periodic=False,
-                 steps=1, solver="PCG", tol=1e-12, boundary=None, Phi=None):
+                 steps=1, solver="PCG", tol=1e-12, boundary=None, Phi=None,
+                 d=1e-6, parcelEntries=""):
         self.path, self.x, self.q = path, np.asarray(x), np.asarray(q)
         self.L, self.n, self.model = L, n, model
         self.coeffs, self.periodic, self.steps = coeffs, periodic, steps
@@ -52,6 +67,8 @@ class FarFieldCase:
         # optional: blockMeshDict boundary entries and a 0/Phi
         # boundaryField body (default: the walls/cyclics and no 0/Phi)
         self.boundary, self.Phi = boundary, Phi
+        # parcel diameter and further entries of every parcel (e.g. epsilonR)
+        self.d, self.parcelEntries = d, parcelEntries
 
     def write(self):
         p = self.path
@@ -130,8 +147,8 @@ dimensions [0 1 -2 0 0 0 0];
 value (0 0 0);
 """)
         parcels = "\n".join(
-            "            { position (%.17g %.17g %.17g); U (0 0 0); d 1e-6; "
-            "rho 1e20; q %.17g; }" % (a[0], a[1], a[2], c)
+            "            { position (%.17g %.17g %.17g); U (0 0 0); d %.17g; "
+            "rho 1e20; q %.17g; %s }" % (a[0], a[1], a[2], self.d, c, self.parcelEntries)
             for a, c in zip(self.x, self.q))
         _write(p + "/constant/cloudProperties", "cloudProperties", f"""
 solution
