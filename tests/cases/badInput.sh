@@ -16,22 +16,25 @@ run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
 base=base
 
 # badCase <name> <python re.sub pattern> <replacement> <expected message regex>
-# (a copy of $work/$base with one change)
+#     [<pattern> <replacement> ...]
+# (a copy of $work/$base with one change, or several)
 badCase()
 {
     local name="$1" pattern="$2" repl="$3" expect="$4" dir="$work/$1"
+    shift 4
     rm -rf "$dir"
     cp -r "$work/$base" "$dir"
     (
         cd "$dir" || exit 1
-        $PY - "$pattern" "$repl" <<'PYEOF' || exit 1
+        $PY - "$pattern" "$repl" "$@" <<'PYEOF' || exit 1
 import re, sys
 p = "constant/cloudProperties"
 s = open(p).read()
-t, n = re.subn(sys.argv[1], sys.argv[2], s, count=1)
-if n != 1:
-    sys.exit("pattern not found: " + sys.argv[1])
-open(p, "w").write(t)
+for pattern, repl in zip(sys.argv[1::2], sys.argv[2::2]):
+    s, n = re.subn(pattern, repl, s, count=1)
+    if n != 1:
+        sys.exit("pattern not found: " + pattern)
+open(p, "w").write(s)
 PYEOF
         chargedParticleFoam > log.solver 2>&1
         rc=$?
@@ -89,6 +92,15 @@ badCase unknownNearField 'epsilonR +1;' 'epsilonR 1; nearField { type multipole;
     'Unknown type type multipole'
 badCase negativeRNear 'epsilonR +1;' 'epsilonR 1; nearField { type inducedDipole; rNear -1; }' \
     'Entry rNear = -1 in .* is out of range: it must be finite and > 0'
+badCase negativeClusterGap 'epsilonR +1;' 'epsilonR 1; nearField { type bem; clusterGap -0.5; }' \
+    'Entry clusterGap = -0.5 in .* is out of range: finite and >= 0'
+badCase fewPatches 'epsilonR +1;' 'epsilonR 1; nearField { type bem; nPatches 4; }' \
+    'Entry nPatches = 4 in .* is out of range: >= 8'
+badCase unknownIsolated 'epsilonR +1;' 'epsilonR 1; nearField { type bem; isolated multipole; }' \
+    'Entry isolated multipole in .* is not one of: inducedDipole none'
+badCase bemReducedStiffness 'rho0 +1000;' 'rho0 1000; stiffnessRatio 0.1;' \
+    'nearField type bem in .* does not support constantProperties/stiffnessRatio' \
+    'epsilonR +1;' 'epsilonR 1; nearField { type bem; }'
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

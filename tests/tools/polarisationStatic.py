@@ -19,6 +19,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import heldCloud  # noqa: E402
+
 E_APPLIED = (1e5, 2e5, -5e4)     # [V/m]
 
 CONFIGS = {
@@ -41,42 +44,13 @@ CONFIGS = {
     ],
 }
 
-CLOUD = """FoamFile {{ version 2.0; format ascii; class dictionary; object cloudProperties; }}
-solution
-{{
-    active true; coupled false; transient yes; cellValueSourceCorrection off; maxCo 0.3;
-    interpolationSchemes {{ rho.carrier cell; U.carrier cell; mu.carrier cell; }}
-    integrationSchemes {{ U Euler; }}
-    sourceTerms {{ schemes {{}} }}
-}}
-constantProperties {{ rho0 1e30; }}     // parcels held in place
-subModels
-{{
-    particleForces {{}}
-    electrostaticsModel directCoulomb;
-    appliedField ({ex} {ey} {ez});
+ELECTROSTATICS = """    electrostaticsModel directCoulomb;
+    appliedField (%r %r %r);
     directCoulombCoeffs
-    {{
+    {
         epsilonR 1;
-        nearField {{ type inducedDipole; rNear 1; tolerance 1e-14; }}
-    }}
-    injectionModels
-    {{
-        pair
-        {{
-            type explicitParcels; SOI 0;
-            parcels
-            (
-{parcels}
-            );
-        }}
-    }}
-    collisionModel none; dispersionModel none;
-    patchInteractionModel standardWallInteraction;
-    standardWallInteractionCoeffs {{ type rebound; e 1; mu 0; }}
-    stochasticCollisionModel none; surfaceFilmModel none;
-}}
-cloudFunctions {{ particleHistory {{ type particleHistory; interval 1; }} }}
+        nearField { type inducedDipole; rNear 1; tolerance 1e-14; }
+    }
 """
 
 BEM = """FoamFile {{ version 2.0; format ascii; class dictionary; object bemElectrostaticsDict; }}
@@ -102,9 +76,9 @@ def write(case, config):
     parcels = "\n".join(
         "                { position %s; semiAxes %s; eulerAngles %s; epsilonR %.17g; q %.17g; }"
         % (vec(c), vec(s), vec(e), k, q) for c, s, e, k, q in parts)
-    ex, ey, ez = E_APPLIED
     open(os.path.join(case, "constant/cloudProperties"), "w").write(
-        CLOUD.format(ex=ex, ey=ey, ez=ez, parcels=parcels))
+        heldCloud.cloudProperties(ELECTROSTATICS % E_APPLIED, parcels))
+    ex, ey, ez = E_APPLIED
     particles = "\n".join(
         "    p%d { centre %s; orientation { type euler; angles %s; } semiAxes %s;"
         " kappa %.17g; charge %.17g; }" % (i, vec(c), vec(e), vec(s), k, q)

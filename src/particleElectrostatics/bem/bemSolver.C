@@ -575,7 +575,7 @@ void Foam::bemSolver::computeOutputs()
         vector F(Zero), M(Zero);
         for (label i = offset_[p]; i < offset_[p + 1]; ++i)
         {
-            vector Ei = E[i]/eps0;
+            vector Ei = E[i]/eps0 + particleE_[p];
             if (Eext_)
             {
                 Ei += Eext_(x_[i]);
@@ -819,6 +819,7 @@ Foam::label Foam::bemSolver::addParticle
             << exit(FatalError);
     }
     particles_.push_back({shapeI, centre, R, kappaP, sigmaF});
+    particleE_.append(Zero);
     assembled_ = false;
     return particles_.size() - 1;
 }
@@ -835,6 +836,7 @@ void Foam::bemSolver::setPose(const label i, const point& centre, const tensor& 
 void Foam::bemSolver::clearParticles()
 {
     particles_.clear();
+    particleE_.clear();
     pcX_.clear();
     pcQ_.clear();
     assembled_ = false;
@@ -858,6 +860,12 @@ void Foam::bemSolver::setExternalField(const vector& E0)
 void Foam::bemSolver::setExternalField(const fieldFunction& f)
 {
     Eext_ = f;
+}
+
+
+void Foam::bemSolver::setParticleField(const label i, const vector& E)
+{
+    particleE_[i] = E;
 }
 
 
@@ -885,7 +893,7 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
     scalarField b(N), Eext(N);
     for (label i = 0; i < N; ++i)
     {
-        scalar En = 0;
+        scalar En = eps0*(n_[i] & particleE_[owner_[i]]);
         if (Eext_)
         {
             En += eps0*(n_[i] & Eext_(x_[i]));
@@ -1096,6 +1104,17 @@ Foam::scalar Foam::bemSolver::boundCharge(const label i) const
         Q += a_[k]*sigmaB_[k];
     }
     return Q;
+}
+
+
+Foam::vector Foam::bemSolver::boundDipole(const label i) const
+{
+    vector p(Zero);
+    for (label k = offset_[i]; k < offset_[i + 1]; ++k)
+    {
+        p += (a_[k]*sigmaB_[k])*(x_[k] - particles_[i].centre);
+    }
+    return kappa0_*p;
 }
 
 

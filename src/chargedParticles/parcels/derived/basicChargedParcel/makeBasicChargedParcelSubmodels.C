@@ -30,6 +30,7 @@ Description
 #include "ImageCoulomb.H"
 #include "NoNearField.H"
 #include "InducedDipoleNearField.H"
+#include "BemNearField.H"
 #include "EllipsoidCollision.H"
 #include "OscillatingFrameForce.H"
 #include "EllipsoidDragForce.H"
@@ -66,6 +67,7 @@ makeElectrostaticsModelType(ImageCoulomb, basicChargedCloud);
 makeNearFieldModel(basicChargedCloud);
 makeNearFieldModelType(NoNearField, basicChargedCloud);
 makeNearFieldModelType(InducedDipoleNearField, basicChargedCloud);
+makeNearFieldModelType(BemNearField, basicChargedCloud);
 
 makeTriboChargingModel(basicChargedCloud);
 makeTriboChargingModelType(NoTriboCharging, basicChargedCloud);

@@ -5,7 +5,6 @@
 #include "InducedDipoleNearField.H"
 #include "ElectrostaticsModel.H"
 #include "inducedDipole.H"
-#include "ListListOps.H"
 #include "Pstream.H"
 
 #include <algorithm>
@@ -103,31 +102,24 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::InducedDipoleNearField<CloudType>::correct
+void Foam::InducedDipoleNearField<CloudType>::solveDipoles
 (
-    const ElectrostaticsModel<CloudType>& farField
+    const ElectrostaticsModel<CloudType>& farField,
+    const parcelIdSet& excluded
 )
 {
     CloudType& cloud = this->owner();
     const scalar kappa0 = farField.mediumEpsilonR();
-    const label nProcs = Pstream::nProcs();
-    const label me = Pstream::myProcNo();
     const label n = cloud.size();
 
     // This processor's parcels: centres, charges, polarisabilities, the
     // far field at them, the last dipoles and the ids
-    List<pointField> allX(nProcs);
-    List<scalarField> allQ(nProcs);
-    List<tensorField> allA(nProcs);
-    List<vectorField> allE(nProcs);
-    List<vectorField> allP(nProcs);
-    List<labelList> allId(nProcs);
-    allX[me].setSize(n);
-    allQ[me].setSize(n);
-    allA[me].setSize(n);
-    allE[me].setSize(n);
-    allP[me].setSize(n);
-    allId[me].setSize(2*n);
+    pointField myX(n);
+    scalarField myQ(n);
+    tensorField myA(n);
+    vectorField myE(n);
+    vectorField myP(n);
+    labelList myId(2*n);
 
     scalar dMax = 0;
     label nPolar = 0;
@@ -144,15 +136,19 @@ void Foam::InducedDipoleNearField<CloudType>::correct
                 << " epsilonR (" << this->dict().name().c_str() << ")"
                 << exit(FatalError);
         }
-        allX[me][i] = p.centre();
-        allQ[me][i] = p.q();
-        allE[me][i] = p.E();
-        allP[me][i] = p.dipole();
-        allId[me][2*i] = p.origProc();
-        allId[me][2*i + 1] = p.origId();
-        if (p.epsilonR() != kappa0)
+        myX[i] = p.centre();
+        myQ[i] = p.q();
+        myE[i] = p.E();
+        myP[i] = p.dipole();
+        myId[2*i] = p.origProc();
+        myId[2*i + 1] = p.origId();
+        if
+        (
+            p.epsilonR() != kappa0
+         && !excluded.found(labelPair(p.origProc(), p.origId()))
+        )
         {
-            allA[me][i] = inducedDipole::polarisability
+            myA[i] = inducedDipole::polarisability
             (
                 p.semiAxes(),
                 depolarisationFactors(p.semiAxes()),
@@ -165,7 +161,7 @@ void Foam::InducedDipoleNearField<CloudType>::correct
         }
         else
         {
-            allA[me][i] = Zero;
+            myA[i] = Zero;
         }
         ++i;
     }
@@ -209,47 +205,16 @@ void Foam::InducedDipoleNearField<CloudType>::correct
             << exit(FatalIOError);
     }
 
-    // Every processor gets every parcel (see ElectrostaticsModel)
-    Pstream::gatherList(allX);
-    Pstream::scatterList(allX);
-    Pstream::gatherList(allQ);
-    Pstream::scatterList(allQ);
-    Pstream::gatherList(allA);
-    Pstream::scatterList(allA);
-    Pstream::gatherList(allE);
-    Pstream::scatterList(allE);
-    Pstream::gatherList(allP);
-    Pstream::scatterList(allP);
-    Pstream::gatherList(allId);
-    Pstream::scatterList(allId);
-
-    label myStart = 0;
-    for (label proci = 0; proci < me; ++proci)
-    {
-        myStart += allX[proci].size();
-    }
-    const pointField x(ListListOps::combine<pointField>(allX, accessOp<pointField>()));
-    const scalarField q(ListListOps::combine<scalarField>(allQ, accessOp<scalarField>()));
-    const tensorField A(ListListOps::combine<tensorField>(allA, accessOp<tensorField>()));
-    const vectorField E0(ListListOps::combine<vectorField>(allE, accessOp<vectorField>()));
-    const vectorField P0(ListListOps::combine<vectorField>(allP, accessOp<vectorField>()));
-    const labelList ids(ListListOps::combine<labelList>(allId, accessOp<labelList>()));
+    // Every processor gets every parcel, in one order
+    label myStart = 0, start = 0;
+    const pointField x(this->gatherAll(myX, myStart));
+    const scalarField q(this->gatherAll(myQ, start));
+    const tensorField A(this->gatherAll(myA, start));
+    const vectorField E0(this->gatherAll(myE, start));
+    const vectorField P0(this->gatherAll(myP, start));
+    const labelList ids(this->gatherAll(myId, start));
     const label N = x.size();
-
-    // One order for all processors and decompositions: by (origProc,
-    // origId); rank[k]: the place of gathered parcel k in it
-    labelList order(identity(N));
-    std::sort
-    (
-        order.begin(),
-        order.end(),
-        [&](const label a, const label b)
-        {
-            return
-                ids[2*a] < ids[2*b]
-             || (ids[2*a] == ids[2*b] && ids[2*a + 1] < ids[2*b + 1]);
-        }
-    );
+    const labelList order(this->idOrder(ids));
     labelList rank(N);
     forAll(order, k)
     {
@@ -295,16 +260,9 @@ void Foam::InducedDipoleNearField<CloudType>::correct
             }
             ++i;
         }
-        List<List<labelPair>> allContacts(nProcs);
-        allContacts[me].transfer(contacts);
-        Pstream::gatherList(allContacts);
-        Pstream::scatterList(allContacts);
         dipoles.setPairWeights
         (
-            ListListOps::combine<List<labelPair>>
-            (
-                allContacts, accessOp<List<labelPair>>()
-            ),
+            this->gatherAll(List<labelPair>(contacts), start),
             contactWeight_
         );
     }
@@ -326,6 +284,16 @@ void Foam::InducedDipoleNearField<CloudType>::correct
     nPairs_ = dipoles.pairs().size();
     iterations_ = dipoles.iterations();
     residual_ = dipoles.residual();
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::correct
+(
+    const ElectrostaticsModel<CloudType>& farField
+)
+{
+    solveDipoles(farField, parcelIdSet());
 }
 
 

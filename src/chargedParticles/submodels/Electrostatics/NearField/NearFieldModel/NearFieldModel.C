@@ -3,6 +3,10 @@
 \*---------------------------------------------------------------------------*/
 
 #include "NearFieldModel.H"
+#include "ListListOps.H"
+#include "Pstream.H"
+
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -16,6 +20,51 @@ Foam::NearFieldModel<CloudType>::NearFieldModel
     owner_(owner),
     dict_(dict)
 {}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+template<class ListType>
+ListType Foam::NearFieldModel<CloudType>::gatherAll
+(
+    const ListType& mine,
+    label& start
+)
+{
+    List<ListType> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = mine;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    start = 0;
+    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    {
+        start += all[proci].size();
+    }
+    return ListListOps::combine<ListType>(all, accessOp<ListType>());
+}
+
+
+template<class CloudType>
+Foam::labelList Foam::NearFieldModel<CloudType>::idOrder
+(
+    const labelList& ids
+)
+{
+    labelList order(identity(ids.size()/2));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&](const label a, const label b)
+        {
+            return
+                ids[2*a] < ids[2*b]
+             || (ids[2*a] == ids[2*b] && ids[2*a + 1] < ids[2*b + 1]);
+        }
+    );
+    return order;
+}
 
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
@@ -33,7 +82,7 @@ Foam::NearFieldModel<CloudType>::New
         FatalIOErrorInFunction(farFieldCoeffs)
             << "Entry nearField in " << farFieldCoeffs.name().c_str()
             << " must be a dictionary: nearField { type none|"
-            << "inducedDipole; }" << exit(FatalIOError);
+            << "inducedDipole|bem; }" << exit(FatalIOError);
     }
     const dictionary& dict = farFieldCoeffs.subOrEmptyDict("nearField");
     const word modelType(dict.template lookupOrDefault<word>("type", "none"));

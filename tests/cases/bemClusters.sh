@@ -1,0 +1,124 @@
+# BEM clusters in the cloud (nearField bem, Ruan 2022 Section 2.1 in
+# dynamics): forces of close dielectric sphere pairs against the exact
+# two-sphere solution (radii 1:2, epsilonR 2-1000, like and opposite
+# charges, gaps 0.05-0.5 of the smaller radius), the far field's own pair
+# taken out again (directCoulomb = none for a lone pair), 2 processors =
+# serial, and two spheres released at a small gap against the trajectory
+# integrated from the exact force.
+. "$(dirname "$0")/common.sh.inc"
+
+staticCase()    # staticCase <dir> <bemClusterStatic.py write options>
+{
+    local dir="$1"
+    shift
+    copyCase twoChargedSpheres "$dir"
+    (
+        cd "$dir" || exit 1
+        sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
+        $PY "$tools/bemClusterStatic.py" write . "$@"
+        setEndTime 1e-6
+        setWriteInterval 1
+        run blockMesh blockMesh
+    )
+}
+
+for ratio in 1 2 5
+do
+    staticCase "$work/static$ratio" --ratio $ratio
+    (
+        cd "$work/static$ratio" || exit 1
+        run solver chargedParticleFoam || fail "bemClusters.exactTwoSpheres$ratio (solver failed)"
+        $PY "$tools/bemClusterStatic.py" compare . --ratio $ratio | tee table.md | grep -E '^(PASS|FAIL)'
+    )
+done
+check bemClusters.log "(24 clusters of 2 in the log)" \
+    grep -q "BEM clusters  *= 24 (48 parcels, largest 2)" "$work/static2/log.solver"
+staticCase "$work/parallel"
+
+# The parallel run: parcels on both processors, clusters across them
+(
+    cd "$work/parallel" || exit 1
+    run decomposePar decomposePar || fail "bemClusters.parallel (decomposePar)"
+    run solver mpirun -np 2 chargedParticleFoam -parallel || fail "bemClusters.parallel (mpirun)"
+    run reconstructPar reconstructPar -latestTime || fail "bemClusters.parallel (reconstructPar)"
+)
+
+$PY - "$work" "$top" <<'PYEOF'
+import os, sys
+import numpy as np
+work, top = sys.argv[1], sys.argv[2]
+sys.path.insert(0, top + "/etc/python")
+from foamLagrangian import read_field, read_positions
+
+def load(case):
+    t = max((d for d in os.listdir(case) if d.replace(".", "").replace("e-", "").isdigit() and float(d) > 0), key=float)
+    c = f"{case}/{t}/lagrangian/cloud"
+    return (read_positions(c + "/positions"), read_field(c + "/fE").reshape(-1, 3),
+            read_field(c + "/tE").reshape(-1, 3))
+
+xs, fs, ts = load(work + "/static2")
+xp, fp, tp = load(work + "/parallel")
+# match by position (the processors' meshes move the parcels by round-off)
+m = np.array([int(np.argmin(np.linalg.norm(xp - x, axis=1))) for x in xs])
+ok = len(xs) == len(xp) == 48 and sorted(m) == list(range(48))
+fp, tp = fp[m], tp[m]
+eF = np.abs(fs - fp).max()/np.abs(fs).max()
+eT = np.abs(ts - tp).max()/np.abs(fs).max()/1e-4
+print("%s: bemClusters.parallel (2 processors vs serial, 48 parcels: force difference %.1e,"
+      " torque %.1e (of |F| x 100 um); tol 1e-10)" % ("PASS" if ok and eF < 1e-10 and eT < 1e-10 else "FAIL", eF, eT))
+PYEOF
+
+# A lone pair under directCoulomb: the far field's point-charge pair is
+# taken out of the cluster's external field, so the forces equal those
+# without a far field
+for far in none directCoulomb
+do
+    staticCase "$work/pair-$far" --far $far --pairs 1
+    (cd "$work/pair-$far" && run solver chargedParticleFoam) || fail "bemClusters.farFieldPair ($far failed)"
+done
+$PY - "$work" "$top" <<'PYEOF'
+import sys
+import numpy as np
+work, top = sys.argv[1], sys.argv[2]
+sys.path.insert(0, top + "/etc/python")
+from foamLagrangian import read_field
+f = [read_field(f"{work}/pair-{m}/1e-06/lagrangian/cloud/fE").reshape(-1, 3) for m in ("none", "directCoulomb")]
+e = np.abs(f[0] - f[1]).max()/np.abs(f[0]).max()
+print("%s: bemClusters.farFieldPair (a lone pair: directCoulomb + bem vs bem alone:"
+      " force difference %.1e of the force, tol 1e-12)" % ("PASS" if e < 1e-12 else "FAIL", e))
+PYEOF
+
+# Two like-charged spheres (radii 50 and 100 um, epsilonR 10) released
+# 0.3 a1 apart attract; their gap against the exact two-sphere force
+# integrated (RK4) until 0.1 a1, and the total momentum
+copyCase dielectricSpheres "$work/attraction"
+(
+    cd "$work/attraction" || exit 1
+    sed -i 's/type    inducedDipole;  \/\/ monopole + induced dipoles/type    bem;/' constant/cloudProperties
+    sed -i -E "s/^deltaT .*/deltaT          1e-5;/" system/controlDict
+    setEndTime 3.5e-3
+    setWriteInterval 350
+    run blockMesh blockMesh && run solver chargedParticleFoam \
+        || fail "bemClusters.attraction (solver failed)"
+    $PY - <<'PYEOF'
+import math, sys
+import numpy as np
+sys.path.insert(0, ".")
+import attraction as A
+t, p1, p2, c = A.read_history(".")
+d0 = 9e-5 + 7.5e-5
+times = np.concatenate([[0.0], t])
+dSim = np.concatenate([[d0], p2[:, c["x"]] - p1[:, c["x"]]])
+gaps = np.geomspace(0.01*A.a1, 2*(d0 - A.a1 - A.a2), 200)
+Fex = np.array([A.tds.force(A.q1, A.q2, A.a1, A.a2, A.a1 + A.a2 + g, A.k1, A.k2) for g in gaps])
+dEx = A.integrate(lambda dd: np.interp(math.log(dd - A.a1 - A.a2), np.log(gaps), Fex), d0, times)
+err = np.abs(dSim - dEx).max()/(d0 - dEx.min())
+P = A.m1*p1[:, c["Ux"]] + A.m2*p2[:, c["Ux"]]
+pErr = np.abs(P).max()/np.abs(A.m2*p2[:, c["Ux"]]).max()
+gap = lambda dd: (dd - A.a1 - A.a2)/A.a1
+ok = err < 0.01 and pErr < 1e-10 and gap(dEx[-1]) < 0.12
+print("%s: bemClusters.attraction (gap 0.3 -> %.4f a1 in 3.5 ms, exact force %.4f a1: max"
+      " difference %.2e of the travel, tol 1e-2; momentum %.1e of the largest, tol 1e-10)"
+      % ("PASS" if ok else "FAIL", gap(dSim[-1]), gap(dEx[-1]), err, pErr))
+PYEOF
+)
