@@ -820,6 +820,7 @@ Foam::label Foam::bemSolver::addParticle
     }
     particles_.push_back({shapeI, centre, R, kappaP, sigmaF});
     particleE_.append(Zero);
+    initialGuess_.append(scalarField());
     assembled_ = false;
     return particles_.size() - 1;
 }
@@ -837,6 +838,7 @@ void Foam::bemSolver::clearParticles()
 {
     particles_.clear();
     particleE_.clear();
+    initialGuess_.clear();
     pcX_.clear();
     pcQ_.clear();
     assembled_ = false;
@@ -866,6 +868,12 @@ void Foam::bemSolver::setExternalField(const fieldFunction& f)
 void Foam::bemSolver::setParticleField(const label i, const vector& E)
 {
     particleE_[i] = E;
+}
+
+
+void Foam::bemSolver::setInitialGuess(const label i, const scalarField& sigmaB)
+{
+    initialGuess_[i] = sigmaB;
 }
 
 
@@ -962,14 +970,30 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
     scalar tMv = 0;
     sigmaB_.setSize(N);
     sigmaB_ = 0;
+    bool warm = false;
+    for (label p = 0; p < label(particles_.size()); ++p)
+    {
+        if (initialGuess_[p].size() == offset_[p + 1] - offset_[p])
+        {
+            SubList<scalar>(sigmaB_, offset_[p + 1] - offset_[p], offset_[p]) =
+                initialGuess_[p];
+            warm = true;
+        }
+    }
     const scalar bnorm = Foam::sqrt(sum(sqr(b)));
     info_.iterations = 0;
-    info_.converged = (bnorm == 0);
     info_.residual = 0;
     const label m = ctrl_.restart;
     std::vector<scalarField> V;
     scalarField r(b), w(N), z(N);
-    scalar beta = bnorm;
+    if (warm)
+    {
+        applyA(sigmaB_, w);
+        r -= w;
+    }
+    scalar beta = Foam::sqrt(sum(sqr(r)));
+    info_.converged = (bnorm == 0 || beta < ctrl_.tolerance*bnorm);
+    info_.residual = bnorm > 0 ? beta/bnorm : 0;
     while (!info_.converged && info_.iterations < ctrl_.maxIter)
     {
         V.assign(1, scalarField(r/beta));

@@ -118,6 +118,27 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
 }
 
 
+template<class CloudType>
+Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
+(
+    const label shapeI,
+    const scalar kappa
+)
+{
+    const auto key = std::make_pair(shapeI, kappa);
+    auto iter = selfEnergy_.find(key);
+    if (iter == selfEnergy_.end())
+    {
+        // The member alone with a unit charge, no external field
+        bem_->clearParticles();
+        bem_->addParticle(shapeI, Zero, tensor::I, kappa, 1.0);
+        bem_->solve();
+        iter = selfEnergy_.emplace(key, bem_->energy()).first;
+    }
+    return iter->second;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -356,9 +377,11 @@ void Foam::BemNearField<CloudType>::correct
     stats_.maxClusterSize = 0;
     stats_.gmresIterations = 0;
     stats_.gmresResidual = 0;
+    stats_.energy = 0;
     if (clusters.empty())
     {
         stats_.nShapes = shapeIndex_.size();
+        lastSigmaB_.clear();
         return;
     }
 
@@ -374,11 +397,16 @@ void Foam::BemNearField<CloudType>::correct
 
     // Solve each cluster; results by gathered index
     vectorField F(N, Zero), M(N, Zero), P(N, Zero);
+    std::map<labelPair, std::pair<label, scalarField>> sigmaB;
     for (const auto& c : clusters)
     {
         const DynamicList<label>& mem = c.second;
         stats_.maxClusterSize = max(stats_.maxClusterSize, mem.size());
-        bem_->clearParticles();
+
+        // Each member's mesh and pose
+        labelList shapes(mem.size());
+        tensorField poses(mem.size());
+        vectorField Eext(mem.size());
         forAll(mem, m)
         {
             const label g = mem[m];
@@ -415,23 +443,45 @@ void Foam::BemNearField<CloudType>::correct
                 max(nPatches_, controls_.maxPreconditionerPatches)
             );
             const bool sphere = cmptMin(S[g]) == cmptMax(S[g]);
-            const label shapeI =
+            shapes[m] =
                 sphere
               ? shapeFor(S[g], vector(1, 0, 0), lambda, nP)
               : shapeFor(S[g], R[g].T() & u, lambda, nP);
-            const tensor Rb = sphere ? rotationFromX(u) : R[g];
-            const label k = bem_->addParticle(shapeI, x[g], Rb, K[g], q[g]);
+            poses[m] = sphere ? rotationFromX(u) : R[g];
+            selfEnergy(shapes[m], K[g]);
+        }
 
-            // External field: everything but the cluster's own charges
-            vector Eext = E[g];
+        bem_->clearParticles();
+        scalar Uout = 0;
+        forAll(mem, m)
+        {
+            const label g = mem[m];
+            const label k =
+                bem_->addParticle(shapes[m], x[g], poses[m], K[g], q[g]);
+
+            // External field: everything but the cluster's own charges;
+            // the far field's energy of the pairs inside, q_i E_q,j.r_ij
+            // (a Coulomb pair), is taken out of the books as well
+            Eext[m] = E[g];
             for (const label h : mem)
             {
                 if (h != g)
                 {
-                    Eext -= farField.pointChargeField(x[g], x[h], q[h]);
+                    const vector Eh =
+                        farField.pointChargeField(x[g], x[h], q[h]);
+                    Eext[m] -= Eh;
+                    Uout += 0.5*q[g]*(Eh & (x[g] - x[h]));
                 }
             }
-            bem_->setParticleField(k, Eext);
+            bem_->setParticleField(k, Eext[m]);
+
+            // Warm start from the last step's bound charge on the same mesh
+            const labelPair id(ids[2*g], ids[2*g + 1]);
+            const auto last = lastSigmaB_.find(id);
+            if (last != lastSigmaB_.end() && last->second.first == shapes[m])
+            {
+                bem_->setInitialGuess(k, last->second.second);
+            }
         }
         const bemSolver::solveInfo& info = bem_->solve();
         if (!info.converged)
@@ -446,13 +496,28 @@ void Foam::BemNearField<CloudType>::correct
         }
         stats_.gmresIterations += info.iterations;
         stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
+
+        // Energy (Eq. 51) beyond the far field's: the cluster's minus its
+        // members alone minus the far field's internal pairs, and the
+        // bound charge in the external field, -1/2 p_b . E_ext
+        scalar U = bem_->energy() - Uout;
         forAll(mem, m)
         {
-            F[mem[m]] = bem_->forces()[m];
-            M[mem[m]] = bem_->torques()[m];
-            P[mem[m]] = bem_->boundDipole(m);
+            const label g = mem[m];
+            F[g] = bem_->forces()[m];
+            M[g] = bem_->torques()[m];
+            P[g] = bem_->boundDipole(m);
+            U -= sqr(q[g])*selfEnergy(shapes[m], K[g]);
+            U -= 0.5*(P[g] & Eext[m]);
+            sigmaB.emplace
+            (
+                labelPair(ids[2*g], ids[2*g + 1]),
+                std::make_pair(shapes[m], scalarField(bem_->sigmaB(m)))
+            );
         }
+        stats_.energy += U;
     }
+    lastSigmaB_.swap(sigmaB);
     stats_.nShapes = shapeIndex_.size();
 
     i = 0;
