@@ -96,6 +96,8 @@ badCase negativeClusterGap 'epsilonR +1;' 'epsilonR 1; nearField { type bem; clu
     'Entry clusterGap = -0.5 in .* is out of range: finite and >= 0'
 badCase fewPatches 'epsilonR +1;' 'epsilonR 1; nearField { type bem; nPatches 4; }' \
     'Entry nPatches = 4 in .* is out of range: >= 8'
+badCase zeroSolveInterval 'epsilonR +1;' 'epsilonR 1; nearField { type bem; solveInterval 0; }' \
+    'Entry solveInterval = 0 in .* is out of range: >= 1'
 badCase unknownIsolated 'epsilonR +1;' 'epsilonR 1; nearField { type bem; isolated multipole; }' \
     'Entry isolated multipole in .* is not one of: inducedDipole none'
 badCase bemReducedStiffness 'rho0 +1000;' 'rho0 1000; stiffnessRatio 0.1;' \

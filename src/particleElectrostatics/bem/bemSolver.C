@@ -1069,6 +1069,32 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
 }
 
 
+const Foam::bemSolver::solveInfo& Foam::bemSolver::evaluate()
+{
+    if (!assembled_)
+    {
+        assemble();
+    }
+    sigmaB_.setSize(x_.size());
+    for (label p = 0; p < label(particles_.size()); ++p)
+    {
+        const label n = offset_[p + 1] - offset_[p];
+        if (initialGuess_[p].size() != n)
+        {
+            FatalErrorInFunction
+                << "particle " << p << " has no bound charge of " << n
+                << " patches to evaluate (setInitialGuess)"
+                << exit(FatalError);
+        }
+        SubList<scalar>(sigmaB_, n, offset_[p]) = initialGuess_[p];
+    }
+    info_ = solveInfo();
+    info_.converged = true;
+    computeOutputs();
+    return info_;
+}
+
+
 Foam::scalar Foam::bemSolver::matvecCpuTime(const label nRepeat) const
 {
     if (!assembled_)

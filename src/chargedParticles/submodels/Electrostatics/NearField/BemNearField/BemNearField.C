@@ -101,10 +101,13 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
         (sphere || lambda == 1)
       ? -1
       : bemNearFieldDetail::directionBin(focus, 64, dir);
-    const auto key = std::make_tuple
-    (
-        semiAxes.x(), semiAxes.y(), semiAxes.z(), bin, lambda, nPatches
-    );
+    meshKey key;
+    key[0] = semiAxes.x();
+    key[1] = semiAxes.y();
+    key[2] = semiAxes.z();
+    key[3] = bin;
+    key[4] = lambda;
+    key[5] = nPatches;
     auto iter = shapeIndex_.find(key);
     if (iter == shapeIndex_.end())
     {
@@ -113,6 +116,8 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
             key,
             bem_->shape(semiAxes, nPatches, dir, lambda)
         ).first;
+        shapeKeys_.resize(max(label(shapeKeys_.size()), iter->second + 1));
+        shapeKeys_[iter->second] = key;
     }
     return iter->second;
 }
@@ -139,6 +144,53 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 }
 
 
+template<class CloudType>
+void Foam::BemNearField<CloudType>::writeState() const
+{
+    labelList ids(2*lastSigmaB_.size());
+    List<meshKey> meshes(lastSigmaB_.size());
+    List<scalarField> sigmaB(lastSigmaB_.size());
+    label k = 0;
+    for (const auto& entry : lastSigmaB_)
+    {
+        ids[2*k] = entry.first.first();
+        ids[2*k + 1] = entry.first.second();
+        meshes[k] = entry.second.first;
+        sigmaB[k] = entry.second.second;
+        ++k;
+    }
+    dictionary state;
+    state.add("ids", ids);
+    state.add("meshes", meshes);
+    state.add("sigmaB", sigmaB);
+    this->owner().outputProperties().set("bemNearField", state);
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::readState()
+{
+    stateRead_ = true;
+    const dictionary& props = this->owner().outputProperties();
+    if (!props.isDict("bemNearField"))
+    {
+        return;
+    }
+    const dictionary& state = props.subDict("bemNearField");
+    const labelList ids(state.lookup("ids"));
+    const List<meshKey> meshes(state.lookup("meshes"));
+    const List<scalarField> sigmaB(state.lookup("sigmaB"));
+    forAll(meshes, k)
+    {
+        lastSigmaB_.emplace
+        (
+            labelPair(ids[2*k], ids[2*k + 1]),
+            std::make_pair(meshes[k], sigmaB[k])
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -155,6 +207,7 @@ Foam::BemNearField<CloudType>::BemNearField
     (
         dict.template lookupOrDefault<word>("isolated", "inducedDipole")
     ),
+    solveInterval_(dict.template lookupOrDefault<label>("solveInterval", 1)),
     controls_
     (
         [&dict]()
@@ -169,7 +222,8 @@ Foam::BemNearField<CloudType>::BemNearField
             return bemSolverControls::read(solverDict);
         }()
     ),
-    stats_()
+    stats_(),
+    stateRead_(false)
 {
     if (!(clusterGap_ >= 0) || !std::isfinite(clusterGap_))
     {
@@ -185,6 +239,13 @@ Foam::BemNearField<CloudType>::BemNearField
             << "Entry nPatches = " << nPatches_ << " in "
             << dict.name().c_str() << " is out of range: >= 8 (patches per"
             << " parcel)" << exit(FatalIOError);
+    }
+    if (solveInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry solveInterval = " << solveInterval_ << " in "
+            << dict.name().c_str() << " is out of range: >= 1 (time steps"
+            << " between BEM solves)" << exit(FatalIOError);
     }
     if (isolated_ != "inducedDipole" && isolated_ != "none")
     {
@@ -222,8 +283,10 @@ Foam::BemNearField<CloudType>::BemNearField
     clusterGap_(nf.clusterGap_),
     nPatches_(nf.nPatches_),
     isolated_(nf.isolated_),
+    solveInterval_(nf.solveInterval_),
     controls_(nf.controls_),
-    stats_()
+    stats_(),
+    stateRead_(false)
 {}
 
 
@@ -252,7 +315,13 @@ void Foam::BemNearField<CloudType>::correct
     {
         bem_.reset(new bemSolver(kappa0, controls_));
         shapeIndex_.clear();
+        shapeKeys_.clear();
     }
+    if (!stateRead_)
+    {
+        readState();
+    }
+    const bool writeTime = this->owner().db().time().writeTime();
 
     // Geometry and charges of every parcel, on every processor, in one
     // order
@@ -378,10 +447,15 @@ void Foam::BemNearField<CloudType>::correct
     stats_.gmresIterations = 0;
     stats_.gmresResidual = 0;
     stats_.energy = 0;
+    stats_.nSolved = 0;
     if (clusters.empty())
     {
         stats_.nShapes = shapeIndex_.size();
         lastSigmaB_.clear();
+        if (writeTime)
+        {
+            writeState();
+        }
         return;
     }
 
@@ -395,9 +469,12 @@ void Foam::BemNearField<CloudType>::correct
     }
     const vectorField E(this->gatherAll(myE, start));
 
+    const bool solveNow =
+        this->owner().db().time().timeIndex() % solveInterval_ == 0;
+
     // Solve each cluster; results by gathered index
     vectorField F(N, Zero), M(N, Zero), P(N, Zero);
-    std::map<labelPair, std::pair<label, scalarField>> sigmaB;
+    std::map<labelPair, std::pair<meshKey, scalarField>> sigmaB;
     for (const auto& c : clusters)
     {
         const DynamicList<label>& mem = c.second;
@@ -453,6 +530,7 @@ void Foam::BemNearField<CloudType>::correct
 
         bem_->clearParticles();
         scalar Uout = 0;
+        label carried = 0;
         forAll(mem, m)
         {
             const label g = mem[m];
@@ -478,12 +556,23 @@ void Foam::BemNearField<CloudType>::correct
             // Warm start from the last step's bound charge on the same mesh
             const labelPair id(ids[2*g], ids[2*g + 1]);
             const auto last = lastSigmaB_.find(id);
-            if (last != lastSigmaB_.end() && last->second.first == shapes[m])
+            if
+            (
+                last != lastSigmaB_.end()
+             && last->second.first == shapeKeys_[shapes[m]]
+            )
             {
                 bem_->setInitialGuess(k, last->second.second);
+                ++carried;
             }
         }
-        const bemSolver::solveInfo& info = bem_->solve();
+        // Between solves (solveInterval) the bound charge is carried in the
+        // members' body frames, when every member has one on its mesh
+        const bool solve =
+            solveNow || carried < mem.size();
+        const bemSolver::solveInfo& info =
+            solve ? bem_->solve() : bem_->evaluate();
+        stats_.nSolved += solve;
         if (!info.converged)
         {
             FatalErrorInFunction
@@ -512,13 +601,21 @@ void Foam::BemNearField<CloudType>::correct
             sigmaB.emplace
             (
                 labelPair(ids[2*g], ids[2*g + 1]),
-                std::make_pair(shapes[m], scalarField(bem_->sigmaB(m)))
+                std::make_pair
+                (
+                    shapeKeys_[shapes[m]],
+                    scalarField(bem_->sigmaB(m))
+                )
             );
         }
         stats_.energy += U;
     }
     lastSigmaB_.swap(sigmaB);
     stats_.nShapes = shapeIndex_.size();
+    if (writeTime)
+    {
+        writeState();
+    }
 
     i = 0;
     for (auto& p : cloud)
@@ -544,7 +641,7 @@ void Foam::BemNearField<CloudType>::info() const
     }
     Info<< "    BEM clusters                    = " << stats_.nClusters
         << " (" << stats_.nInClusters << " parcels, largest "
-        << stats_.maxClusterSize << "), " << stats_.gmresIterations << " GMRES iterations (residual "
+        << stats_.maxClusterSize << "; " << stats_.nSolved << " solved), " << stats_.gmresIterations << " GMRES iterations (residual "
         << stats_.gmresResidual << "), " << stats_.nShapes << " meshes" << nl;
 }
 
