@@ -100,9 +100,6 @@ badCase zeroSolveInterval 'epsilonR +1;' 'epsilonR 1; nearField { type bem; solv
     'Entry solveInterval = 0 in .* is out of range: >= 1'
 badCase unknownIsolated 'epsilonR +1;' 'epsilonR 1; nearField { type bem; isolated multipole; }' \
     'Entry isolated multipole in .* is not one of: inducedDipole none'
-badCase bemReducedStiffness 'rho0 +1000;' 'rho0 1000; stiffnessRatio 0.1;' \
-    'nearField type bem in .* does not support constantProperties/stiffnessRatio' \
-    'epsilonR +1;' 'epsilonR 1; nearField { type bem; }'
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

@@ -227,82 +227,124 @@ void Foam::bemSolver::assemble()
         }
     }
 
-    // Near pairs between different particles: hash grid on the centres
+    // Near pairs between different particles: a source j of particle s is
+    // near a target i of particle p when |x_i - x_j| < r_j = nearFactor
+    // sqrt(a_j). Per pair of particles within reach, the candidates come
+    // from a lower bound of the distance of a point y to ellipsoid p,
+    // a_min (|S^-1 R^T (y - c)| - 1) (triangle inequality of the norm
+    // |S^-1 .|; patch centres lie on the surface). Graded meshes make a
+    // hash grid on the largest patch size quadratic in the patches.
     if (ctrl_.nearQuadrature && np > 1 && ctrl_.nearFactor > 0)
     {
-        const scalar h = ctrl_.nearFactor*hmax;
-        auto cellOf = [h](const point& p)
-        {
-            return FixedList<long long, 3>
-            ({
-                static_cast<long long>(std::floor(p.x()/h)),
-                static_cast<long long>(std::floor(p.y()/h)),
-                static_cast<long long>(std::floor(p.z()/h))
-            });
-        };
-        auto key = [](long long i, long long j, long long k)
-        {
-            return (i*73856093LL) ^ (j*19349663LL) ^ (k*83492791LL);
-        };
-        std::unordered_multimap<long long, label> grid;
-        grid.reserve(N);
+        scalarField rMaxOf(np, 0);
         for (label i = 0; i < N; ++i)
         {
-            const auto c = cellOf(x_[i]);
-            grid.insert({key(c[0], c[1], c[2]), i});
+            rMaxOf[owner_[i]] =
+                max(rMaxOf[owner_[i]], ctrl_.nearFactor*Foam::sqrt(a_[i]));
         }
-        pointField qpw(ellipsoidSurfaceMesh::nQuad);
-        for (label j = 0; j < N; ++j)
+        auto distanceBelow = [this](const label p, const point& y)
         {
-            const particle& pj = particles_[owner_[j]];
-            const ellipsoidSurfaceMesh& mj = mesh(pj.shape);
-            const label kj = j - offset_[owner_[j]];
-            const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
-            bool haveQp = false;
-            const auto c = cellOf(x_[j]);
-            for (long long di = -1; di <= 1; ++di)
-            for (long long dj = -1; dj <= 1; ++dj)
-            for (long long dl = -1; dl <= 1; ++dl)
+            const particle& pt = particles_[p];
+            const vector& s = mesh(pt.shape).semiAxes();
+            const vector yb = pt.R.T() & (y - pt.centre);
+            return cmptMin(s)*
+            (
+                Foam::sqrt
+                (
+                    sqr(yb.x()/s.x()) + sqr(yb.y()/s.y()) + sqr(yb.z()/s.z())
+                )
+              - 1
+            );
+        };
+        // Round-off of the centres' projection onto the surface
+        const scalar slack = 1 + 1e-9;
+        pointField qpw(ellipsoidSurfaceMesh::nQuad);
+        DynamicList<label> sources, targets;
+        for (label s = 0; s < np; ++s)
+        {
+            const particle& ps = particles_[s];
+            const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
+            for (label p = 0; p < np; ++p)
             {
-                const auto range =
-                    grid.equal_range(key(c[0] + di, c[1] + dj, c[2] + dl));
-                for (auto it = range.first; it != range.second; ++it)
-                {
-                    const label i = it->second;
-                    if (owner_[i] == owner_[j]) continue;
-                    if (magSqr(x_[i] - x_[j]) >= sqr(rj)) continue;
-                    // hash collisions can repeat a pair: check cell
-                    const auto ci = cellOf(x_[i]);
-                    if
+                const particle& pp = particles_[p];
+                if
+                (
+                    p == s
+                 || mag(pp.centre - ps.centre)
+                 >= slack*
                     (
-                        ci[0] != c[0] + di || ci[1] != c[1] + dj
-                     || ci[2] != c[2] + dl
+                        cmptMax(mesh(pp.shape).semiAxes())
+                      + cmptMax(ms.semiAxes()) + rMaxOf[s]
                     )
+                )
+                {
+                    continue;
+                }
+                sources.clear();
+                scalar rMax = 0;
+                for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+                {
+                    const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
+                    if (distanceBelow(p, x_[j]) < slack*rj)
                     {
-                        continue;
+                        sources.append(j);
+                        rMax = max(rMax, rj);
                     }
-                    if (!haveQp)
+                }
+                if (sources.empty())
+                {
+                    continue;
+                }
+                targets.clear();
+                for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+                {
+                    if (distanceBelow(s, x_[i]) < slack*rMax)
                     {
-                        for (label q = 0; q < ellipsoidSurfaceMesh::nQuad; ++q)
+                        targets.append(i);
+                    }
+                }
+                for (const label j : sources)
+                {
+                    const label kj = j - offset_[s];
+                    const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
+                    bool haveQp = false;
+                    for (const label i : targets)
+                    {
+                        if (magSqr(x_[i] - x_[j]) >= sqr(rj))
                         {
-                            qpw[q] = pj.centre
-                              + (pj.R & mj.quadPoints()
-                                    [ellipsoidSurfaceMesh::nQuad*kj + q]);
+                            continue;
                         }
-                        haveQp = true;
-                    }
-                    nearEntry e;
-                    e.j = j;
-                    scalarField qw
-                    (
-                        SubList<scalar>
+                        if (!haveQp)
+                        {
+                            for
+                            (
+                                label q = 0;
+                                q < ellipsoidSurfaceMesh::nQuad;
+                                ++q
+                            )
+                            {
+                                qpw[q] = ps.centre
+                                  + (ps.R & ms.quadPoints()
+                                        [ellipsoidSurfaceMesh::nQuad*kj + q]);
+                            }
+                            haveQp = true;
+                        }
+                        nearEntry e;
+                        e.j = j;
+                        scalarField qw
                         (
-                            mj.quadWeights(), ellipsoidSurfaceMesh::nQuad,
-                            ellipsoidSurfaceMesh::nQuad*kj
-                        )
-                    );
-                    nearCorrection(x_[i], qpw, qw, 0, x_[j], a_[j], e.V, e.P);
-                    near_[i].push_back(e);
+                            SubList<scalar>
+                            (
+                                ms.quadWeights(), ellipsoidSurfaceMesh::nQuad,
+                                ellipsoidSurfaceMesh::nQuad*kj
+                            )
+                        );
+                        nearCorrection
+                        (
+                            x_[i], qpw, qw, 0, x_[j], a_[j], e.V, e.P
+                        );
+                        near_[i].push_back(e);
+                    }
                 }
             }
         }
@@ -528,23 +570,65 @@ void Foam::bemSolver::computeOutputs()
     }
     else
     {
-        for (label i = 0; i < N; ++i)
+        // Direct sums by blocks of (target, source) particles, branch-free
+        // inner loops on separate coordinate arrays (vectorised); the
+        // potential (energy, Eq. 51) only on particles with free charge
+        scalarField X(N), Y(N), Z(N);
+        for (label j = 0; j < N; ++j)
         {
-            vector Ei(Zero);
-            scalar pi_ = 0;
-            for (label j = 0; j < N; ++j)
+            X[j] = x_[j].x();
+            Y[j] = x_[j].y();
+            Z[j] = x_[j].z();
+        }
+        for (label p = 0; p < np; ++p)
+        {
+            bool charged = false;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
             {
-                if (j == i) continue;
-                const vector d = x_[i] - x_[j];
-                const scalar r = mag(d);
-                pi_ += q[j]/r;
-                if (owner_[j] != owner_[i])
-                {
-                    Ei += (q[j]/(r*r*r))*d;
-                }
+                charged = charged || sigmaFall[i] != 0;
             }
-            E[i] = c4pi*Ei;
-            phi[i] = c4pi*pi_;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                const scalar xi = X[i], yi = Y[i], zi = Z[i];
+                scalar ex = 0, ey = 0, ez = 0, pot = 0;
+                for (label s = 0; s < np; ++s)
+                {
+                    const label j0 = offset_[s], j1 = offset_[s + 1];
+                    if (s != p)
+                    {
+                        #pragma omp simd reduction(+:ex, ey, ez, pot)
+                        for (label j = j0; j < j1; ++j)
+                        {
+                            const scalar dx = xi - X[j];
+                            const scalar dy = yi - Y[j];
+                            const scalar dz = zi - Z[j];
+                            const scalar rInv =
+                                1/std::sqrt(dx*dx + dy*dy + dz*dz);
+                            const scalar qr = q[j]*rInv;
+                            const scalar qr3 = qr*rInv*rInv;
+                            pot += qr;
+                            ex += qr3*dx;
+                            ey += qr3*dy;
+                            ez += qr3*dz;
+                        }
+                    }
+                    else if (charged)
+                    {
+                        // Own patches: potential only, without i itself
+                        #pragma omp simd reduction(+:pot)
+                        for (label j = j0; j < j1; ++j)
+                        {
+                            const scalar dx = xi - X[j];
+                            const scalar dy = yi - Y[j];
+                            const scalar dz = zi - Z[j];
+                            const scalar r2 = dx*dx + dy*dy + dz*dz;
+                            pot += (j == i ? 0 : q[j]/std::sqrt(r2 + (j == i)));
+                        }
+                    }
+                }
+                E[i] = c4pi*vector(ex, ey, ez);
+                phi[i] = c4pi*pot;
+            }
         }
     }
     for (label i = 0; i < N; ++i)

@@ -357,6 +357,10 @@ void Foam::ChargedCloud<CloudType>::info()
             Info<< "    Electrostatic energy            = "
                 << electrostatics().totalEnergy() << nl;
         }
+        Info<< "    CPU time [s] since start        = contact "
+            << this->contactTime() << ", far field "
+            << electrostatics().farFieldTime() << ", near field "
+            << electrostatics().nearFieldTime() << nl;
         electrostatics().nearField().info();
 
         // <|fE|/m> (Boutsikakis 2023 Eq. 28), all processors

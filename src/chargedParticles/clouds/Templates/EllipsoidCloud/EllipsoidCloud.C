@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "EllipsoidCloud.H"
+#include "cpuTime.H"
 #include "CollisionModel.H"
 #include "EllipsoidCollision.H"
 #include "subCycleTime.H"
@@ -93,7 +94,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
         )
     ),
     gatherer_(nullptr),
-    kickInMove_(false)
+    kickInMove_(false),
+    contactTime_(0)
 {
     if (logInterval_ < 1)
     {
@@ -150,7 +152,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     trackingTolerance_(c.trackingTolerance_),
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
-    kickInMove_(false)
+    kickInMove_(false),
+    contactTime_(0)
 {}
 
 
@@ -167,7 +170,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     trackingTolerance_(c.trackingTolerance_),
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
-    kickInMove_(false)
+    kickInMove_(false),
+    contactTime_(0)
 {}
 
 
@@ -207,7 +211,9 @@ bool Foam::EllipsoidCloud<CloudType>::logThisStep() const
 template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::calculateForces()
 {
+    cpuTime timer;
     this->collision().collide();
+    contactTime_ += timer.cpuTimeIncrement();
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ElectrostaticsModel.H"
+#include "cpuTime.H"
 #include "NearFieldModel.H"
 #include "ListListOps.H"
 
@@ -163,7 +164,9 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel(CloudType& owner)
     CloudSubModelBase<CloudType>(owner),
     appliedField_(nullptr),
     nearField_(NearFieldModel<CloudType>::New(dictionary(), owner)),
-    Ea_(Zero)
+    Ea_(Zero),
+    farFieldTime_(0),
+    nearFieldTime_(0)
 {}
 
 
@@ -178,7 +181,9 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
     CloudSubModelBase<CloudType>(owner, withCoeffs(dict, type), typeName, type),
     appliedField_(nullptr),
     nearField_(nullptr),
-    Ea_(Zero)
+    Ea_(Zero),
+    farFieldTime_(0),
+    nearFieldTime_(0)
 {
     readLayers(dict);
 }
@@ -193,7 +198,9 @@ Foam::ElectrostaticsModel<CloudType>::ElectrostaticsModel
     CloudSubModelBase<CloudType>(em),
     appliedField_(em.appliedField_.clone()),
     nearField_(em.nearField_->clone()),
-    Ea_(em.Ea_)
+    Ea_(em.Ea_),
+    farFieldTime_(0),
+    nearFieldTime_(0)
 {}
 
 
@@ -216,6 +223,7 @@ bool Foam::ElectrostaticsModel<CloudType>::readsContacts() const
 template<class CloudType>
 void Foam::ElectrostaticsModel<CloudType>::update()
 {
+    cpuTime timer;
     calculate();
 
     if (appliedField_.valid())
@@ -228,9 +236,12 @@ void Foam::ElectrostaticsModel<CloudType>::update()
         }
     }
 
+    farFieldTime_ += timer.cpuTimeIncrement();
+
     if (nearField_->active())
     {
         nearField_->correct(*this);
+        nearFieldTime_ += timer.cpuTimeIncrement();
     }
     else
     {

@@ -5,6 +5,7 @@
 #include "BemNearField.H"
 #include "ElectrostaticsModel.H"
 #include "cutoffPairs.H"
+#include "cpuTime.H"
 
 #include <algorithm>
 #include <numeric>
@@ -48,17 +49,23 @@ inline tensor rotationFromX(const vector& u)
     return H & rodrigues(H & u);
 }
 
+//- Direction k of n on the Fibonacci sphere
+inline vector fibonacciDirection(const label k, const label n)
+{
+    const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
+    const scalar z = 1 - (2*k + 1)/scalar(n);
+    const scalar r = Foam::sqrt(max(1 - z*z, scalar(0)));
+    return vector(r*Foam::cos(golden*k), r*Foam::sin(golden*k), z);
+}
+
 //- Index of the nearest of n Fibonacci-sphere directions to unit u
 inline label directionBin(const vector& u, const label n, vector& dir)
 {
-    const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
     label best = 0;
     scalar bestDot = -2;
     for (label k = 0; k < n; ++k)
     {
-        const scalar z = 1 - (2*k + 1)/scalar(n);
-        const scalar r = Foam::sqrt(max(1 - z*z, scalar(0)));
-        const vector d(r*Foam::cos(golden*k), r*Foam::sin(golden*k), z);
+        const vector d = fibonacciDirection(k, n);
         if ((d & u) > bestDot)
         {
             bestDot = d & u;
@@ -68,6 +75,9 @@ inline label directionBin(const vector& u, const label n, vector& dir)
     }
     return best;
 }
+
+//- Focus directions of the ellipsoids' meshes
+constexpr label nFocusDirections = 64;
 
 //- Union-find root with path halving
 inline label root(labelList& parent, label i)
@@ -100,7 +110,10 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
     const label bin =
         (sphere || lambda == 1)
       ? -1
-      : bemNearFieldDetail::directionBin(focus, 64, dir);
+      : bemNearFieldDetail::directionBin
+        (
+            focus, bemNearFieldDetail::nFocusDirections, dir
+        );
     meshKey key;
     key[0] = semiAxes.x();
     key[1] = semiAxes.y();
@@ -120,6 +133,25 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
         shapeKeys_[iter->second] = key;
     }
     return iter->second;
+}
+
+
+template<class CloudType>
+Foam::label Foam::BemNearField<CloudType>::shapeOf(const meshKey& key)
+{
+    const label bin = std::lround(key[3]);
+    return shapeFor
+    (
+        vector(key[0], key[1], key[2]),
+        bin < 0
+      ? vector(1, 0, 0)
+      : bemNearFieldDetail::fibonacciDirection
+        (
+            bin, bemNearFieldDetail::nFocusDirections
+        ),
+        key[4],
+        std::lround(key[5])
+    );
 }
 
 
@@ -163,6 +195,7 @@ void Foam::BemNearField<CloudType>::writeState() const
     state.add("ids", ids);
     state.add("meshes", meshes);
     state.add("sigmaB", sigmaB);
+    state.add("remeshOffset", remeshOffset_);
     this->owner().outputProperties().set("bemNearField", state);
 }
 
@@ -177,6 +210,8 @@ void Foam::BemNearField<CloudType>::readState()
         return;
     }
     const dictionary& state = props.subDict("bemNearField");
+    remeshOffset_ =
+        state.template lookupOrDefault<scalar>("remeshOffset", 0);
     const labelList ids(state.lookup("ids"));
     const List<meshKey> meshes(state.lookup("meshes"));
     const List<scalarField> sigmaB(state.lookup("sigmaB"));
@@ -223,6 +258,9 @@ Foam::BemNearField<CloudType>::BemNearField
         }()
     ),
     stats_(),
+    dipoleTime_(0),
+    clusterTime_(0),
+    remeshOffset_(0),
     stateRead_(false)
 {
     if (!(clusterGap_ >= 0) || !std::isfinite(clusterGap_))
@@ -253,20 +291,6 @@ Foam::BemNearField<CloudType>::BemNearField
             << "Entry isolated " << isolated_ << " in " << dict.name().c_str()
             << " is not one of: inducedDipole none" << exit(FatalIOError);
     }
-    const scalar chi =
-        owner.constProps().dict().template lookupOrDefault<scalar>
-        (
-            "stiffnessRatio",
-            1
-        );
-    if (chi != 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "nearField type bem in " << dict.name().c_str()
-            << " does not support constantProperties/stiffnessRatio "
-            << chi << " != 1 yet (the chi^(2/5) weight of Ruan Eq. 44 has"
-            << " no BEM counterpart here)" << exit(FatalIOError);
-    }
     Info<< "    BEM clusters: surface gaps below " << clusterGap_
         << " x the smaller semi-axis, " << nPatches_ << " patches per parcel,"
         << " isolated parcels: " << isolated_ << endl;
@@ -286,6 +310,9 @@ Foam::BemNearField<CloudType>::BemNearField
     solveInterval_(nf.solveInterval_),
     controls_(nf.controls_),
     stats_(),
+    dipoleTime_(0),
+    clusterTime_(0),
+    remeshOffset_(0),
     stateRead_(false)
 {}
 
@@ -428,9 +455,11 @@ void Foam::BemNearField<CloudType>::correct
 
     // Isolated parcels: dipoles (cluster members unpolarisable there) or
     // point charges
+    cpuTime timer;
     if (isolated_ == "inducedDipole")
     {
         this->solveDipoles(farField, members);
+        dipoleTime_ += timer.cpuTimeIncrement();
     }
     else
     {
@@ -448,6 +477,7 @@ void Foam::BemNearField<CloudType>::correct
     stats_.gmresResidual = 0;
     stats_.energy = 0;
     stats_.nSolved = 0;
+    stats_.nInContact = 0;
     if (clusters.empty())
     {
         stats_.nShapes = shapeIndex_.size();
@@ -528,18 +558,13 @@ void Foam::BemNearField<CloudType>::correct
             selfEnergy(shapes[m], K[g]);
         }
 
-        bem_->clearParticles();
+        // External field of each member: everything but the cluster's own
+        // charges; the far field's energy of the pairs inside, q_i
+        // E_q,j.r_ij (a Coulomb pair), is taken out of the books as well
         scalar Uout = 0;
-        label carried = 0;
         forAll(mem, m)
         {
             const label g = mem[m];
-            const label k =
-                bem_->addParticle(shapes[m], x[g], poses[m], K[g], q[g]);
-
-            // External field: everything but the cluster's own charges;
-            // the far field's energy of the pairs inside, q_i E_q,j.r_ij
-            // (a Coulomb pair), is taken out of the books as well
             Eext[m] = E[g];
             for (const label h : mem)
             {
@@ -551,53 +576,112 @@ void Foam::BemNearField<CloudType>::correct
                     Uout += 0.5*q[g]*(Eh & (x[g] - x[h]));
                 }
             }
-            bem_->setParticleField(k, Eext[m]);
+        }
 
-            // Warm start from the last step's bound charge on the same mesh
-            const labelPair id(ids[2*g], ids[2*g + 1]);
-            const auto last = lastSigmaB_.find(id);
+        // The cluster on the given meshes, GMRES started from each
+        // member's last bound charge on the same mesh; returns how many
+        // members have one
+        auto setUp = [&](const labelList& meshes)
+        {
+            bem_->clearParticles();
+            label carried = 0;
+            forAll(mem, m)
+            {
+                const label g = mem[m];
+                const label k =
+                    bem_->addParticle(meshes[m], x[g], poses[m], K[g], q[g]);
+                bem_->setParticleField(k, Eext[m]);
+                const auto last =
+                    lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
+                if
+                (
+                    last != lastSigmaB_.end()
+                 && last->second.first == shapeKeys_[meshes[m]]
+                )
+                {
+                    bem_->setInitialGuess(k, last->second.second);
+                    ++carried;
+                }
+            }
+            return carried;
+        };
+        auto run = [&](const bool solve)
+        {
+            const bemSolver::solveInfo& info =
+                solve ? bem_->solve() : bem_->evaluate();
+            stats_.nSolved += solve;
+            if (!info.converged)
+            {
+                FatalErrorInFunction
+                    << "BEM cluster of " << mem.size() << " parcels not"
+                    << " converged: relative residual " << info.residual
+                    << " after " << info.iterations << " GMRES iterations ("
+                    << this->dict().name().c_str() << "/solver: tolerance "
+                    << controls_.tolerance << ", maxIter " << controls_.maxIter
+                    << ")" << exit(FatalError);
+            }
+            stats_.gmresIterations += info.iterations;
+            stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
+        };
+        // Energy (Eq. 51) beyond the far field's, of the last solve: the
+        // cluster's minus its members alone minus the far field's internal
+        // pairs, and the bound charge in the external field, -1/2 p_b.E_ext
+        auto energyBeyondFarField = [&](const labelList& meshes)
+        {
+            scalar U = bem_->energy() - Uout;
+            forAll(mem, m)
+            {
+                const label g = mem[m];
+                U -= sqr(q[g])*selfEnergy_.at(std::make_pair(meshes[m], K[g]));
+                U -= 0.5*(bem_->boundDipole(m) & Eext[m]);
+            }
+            return U;
+        };
+
+        // Members whose mesh changed since the last step: the energy on the
+        // old meshes at this configuration too, so that the books carry the
+        // difference across the mesh change (a discretisation jump, not
+        // work of the forces)
+        labelList oldShapes(shapes);
+        bool remeshed = false;
+        forAll(mem, m)
+        {
+            const label g = mem[m];
+            const auto last =
+                lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
             if
             (
                 last != lastSigmaB_.end()
-             && last->second.first == shapeKeys_[shapes[m]]
+             && last->second.first != shapeKeys_[shapes[m]]
             )
             {
-                bem_->setInitialGuess(k, last->second.second);
-                ++carried;
+                oldShapes[m] = shapeOf(last->second.first);
+                selfEnergy(oldShapes[m], K[g]);
+                remeshed = true;
             }
         }
+        if (remeshed)
+        {
+            setUp(oldShapes);
+            run(true);
+            remeshOffset_ += energyBeyondFarField(oldShapes);
+        }
+
         // Between solves (solveInterval) the bound charge is carried in the
         // members' body frames, when every member has one on its mesh
-        const bool solve =
-            solveNow || carried < mem.size();
-        const bemSolver::solveInfo& info =
-            solve ? bem_->solve() : bem_->evaluate();
-        stats_.nSolved += solve;
-        if (!info.converged)
+        const label carried = setUp(shapes);
+        run(solveNow || carried < mem.size());
+        const scalar U = energyBeyondFarField(shapes);
+        if (remeshed)
         {
-            FatalErrorInFunction
-                << "BEM cluster of " << mem.size() << " parcels not"
-                << " converged: relative residual " << info.residual
-                << " after " << info.iterations << " GMRES iterations ("
-                << this->dict().name().c_str() << "/solver: tolerance "
-                << controls_.tolerance << ", maxIter " << controls_.maxIter
-                << ")" << exit(FatalError);
+            remeshOffset_ -= U;
         }
-        stats_.gmresIterations += info.iterations;
-        stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
-
-        // Energy (Eq. 51) beyond the far field's: the cluster's minus its
-        // members alone minus the far field's internal pairs, and the
-        // bound charge in the external field, -1/2 p_b . E_ext
-        scalar U = bem_->energy() - Uout;
         forAll(mem, m)
         {
             const label g = mem[m];
             F[g] = bem_->forces()[m];
             M[g] = bem_->torques()[m];
             P[g] = bem_->boundDipole(m);
-            U -= sqr(q[g])*selfEnergy(shapes[m], K[g]);
-            U -= 0.5*(P[g] & Eext[m]);
             sigmaB.emplace
             (
                 labelPair(ids[2*g], ids[2*g + 1]),
@@ -617,18 +701,25 @@ void Foam::BemNearField<CloudType>::correct
         writeState();
     }
 
+    // Members in contact with another parcel: chi^(2/5) (Ruan Eq. 44)
+    const scalar w = this->contactWeight();
     i = 0;
     for (auto& p : cloud)
     {
         if (members.found(labelPair(p.origProc(), p.origId())))
         {
             const label g = myStart + i;
-            p.fE() = F[g];
-            p.tE() = M[g];
+            const bool inContact =
+                w != 1 && p.collisionRecords().pairRecords().size();
+            stats_.nInContact += inContact;
+            p.fE() = (inContact ? w : 1)*F[g];
+            p.tE() = (inContact ? w : 1)*M[g];
             p.dipole() = P[g];
         }
         ++i;
     }
+    reduce(stats_.nInContact, sumOp<label>());
+    clusterTime_ += timer.cpuTimeIncrement();
 }
 
 
@@ -641,8 +732,17 @@ void Foam::BemNearField<CloudType>::info() const
     }
     Info<< "    BEM clusters                    = " << stats_.nClusters
         << " (" << stats_.nInClusters << " parcels, largest "
-        << stats_.maxClusterSize << "; " << stats_.nSolved << " solved), " << stats_.gmresIterations << " GMRES iterations (residual "
+        << stats_.maxClusterSize << "; " << stats_.nSolved << " solved), "
+        << stats_.gmresIterations << " GMRES iterations (residual "
         << stats_.gmresResidual << "), " << stats_.nShapes << " meshes" << nl;
+    if (this->contactWeight() != 1)
+    {
+        Info<< "    BEM members in contact (x chi^0.4) = "
+            << stats_.nInContact << nl;
+    }
+    Info<< "    BEM remeshing energy carried    = " << remeshOffset_ << nl;
+    Info<< "    CPU time [s] since start        = dipoles " << dipoleTime_
+        << ", BEM clusters " << clusterTime_ << nl;
 }
 
 
