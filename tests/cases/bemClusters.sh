@@ -42,6 +42,19 @@ staticCase "$work/parallel"
     run decomposePar decomposePar || fail "bemClusters.parallel (decomposePar)"
     run solver mpirun -np 2 chargedParticleFoam -parallel || fail "bemClusters.parallel (mpirun)"
     run reconstructPar reconstructPar -latestTime || fail "bemClusters.parallel (reconstructPar)"
+    # Each processor solves its share of the clusters; all keep every
+    # member's bound charge (the master writes it for a restart)
+    grep -q "BEM clusters  *= 24 (48 parcels, largest 2; 24 solved)" log.solver \
+        && pass "bemClusters.parallel.log (24 clusters solved once in all)" \
+        || fail "bemClusters.parallel.log (the log does not show 24 clusters solved)"
+    $PY - <<'PYEOF'
+import re
+props = open("1e-06/uniform/lagrangian/cloud/cloudOutputProperties").read()
+m = re.search(r"bemNearField\s*\{.*?\bids\s+(?:List<label>\s*)?(\d+)", props, re.S)
+n = int(m.group(1))//2 if m else 0
+print("%s: bemClusters.parallel.state (bound charge of %d of 48 members written by the master)"
+      % ("PASS" if n == 48 else "FAIL", n))
+PYEOF
 )
 
 $PY - "$work" "$top" <<'PYEOF'

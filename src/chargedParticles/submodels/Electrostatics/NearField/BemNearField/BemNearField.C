@@ -201,6 +201,48 @@ void Foam::BemNearField<CloudType>::writeState() const
 
 
 template<class CloudType>
+void Foam::BemNearField<CloudType>::allGatherBoundCharge
+(
+    std::map<labelPair, std::pair<meshKey, scalarField>>& sigmaB
+)
+{
+    const label me = Pstream::myProcNo();
+    List<labelList> ids(Pstream::nProcs());
+    List<List<meshKey>> meshes(Pstream::nProcs());
+    List<List<scalarField>> values(Pstream::nProcs());
+    ids[me].setSize(2*sigmaB.size());
+    meshes[me].setSize(sigmaB.size());
+    values[me].setSize(sigmaB.size());
+    label k = 0;
+    for (const auto& entry : sigmaB)
+    {
+        ids[me][2*k] = entry.first.first();
+        ids[me][2*k + 1] = entry.first.second();
+        meshes[me][k] = entry.second.first;
+        values[me][k] = entry.second.second;
+        ++k;
+    }
+    Pstream::gatherList(ids);
+    Pstream::scatterList(ids);
+    Pstream::gatherList(meshes);
+    Pstream::scatterList(meshes);
+    Pstream::gatherList(values);
+    Pstream::scatterList(values);
+    forAll(ids, proci)
+    {
+        forAll(meshes[proci], k)
+        {
+            sigmaB.emplace
+            (
+                labelPair(ids[proci][2*k], ids[proci][2*k + 1]),
+                std::make_pair(meshes[proci][k], values[proci][k])
+            );
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::BemNearField<CloudType>::readState()
 {
     stateRead_ = true;
@@ -503,12 +545,21 @@ void Foam::BemNearField<CloudType>::correct
         this->owner().db().time().timeIndex() % solveInterval_ == 0;
 
     // Solve each cluster; results by gathered index
+    // Each cluster is solved by one processor, round-robin in the sorted
+    // order (every processor holds the whole cluster's inputs, so the
+    // result does not depend on which one)
     vectorField F(N, Zero), M(N, Zero), P(N, Zero);
     std::map<labelPair, std::pair<meshKey, scalarField>> sigmaB;
+    scalar remeshDelta = 0;
+    label clusterI = -1;
     for (const auto& c : clusters)
     {
         const DynamicList<label>& mem = c.second;
         stats_.maxClusterSize = max(stats_.maxClusterSize, mem.size());
+        if (++clusterI % Pstream::nProcs() != Pstream::myProcNo())
+        {
+            continue;
+        }
 
         // Each member's mesh and pose
         labelList shapes(mem.size());
@@ -664,7 +715,7 @@ void Foam::BemNearField<CloudType>::correct
         {
             setUp(oldShapes);
             run(true);
-            remeshOffset_ += energyBeyondFarField(oldShapes);
+            remeshDelta += energyBeyondFarField(oldShapes);
         }
 
         // Between solves (solveInterval) the bound charge is carried in the
@@ -674,7 +725,7 @@ void Foam::BemNearField<CloudType>::correct
         const scalar U = energyBeyondFarField(shapes);
         if (remeshed)
         {
-            remeshOffset_ -= U;
+            remeshDelta -= U;
         }
         forAll(mem, m)
         {
@@ -694,8 +745,26 @@ void Foam::BemNearField<CloudType>::correct
         }
         stats_.energy += U;
     }
+    if (Pstream::parRun())
+    {
+        // Every entry is set by one processor and zero elsewhere: the sums
+        // are exact
+        Pstream::listCombineGather(F, plusEqOp<vector>());
+        Pstream::listCombineScatter(F);
+        Pstream::listCombineGather(M, plusEqOp<vector>());
+        Pstream::listCombineScatter(M);
+        Pstream::listCombineGather(P, plusEqOp<vector>());
+        Pstream::listCombineScatter(P);
+        reduce(stats_.gmresIterations, sumOp<label>());
+        reduce(stats_.gmresResidual, maxOp<scalar>());
+        reduce(stats_.energy, sumOp<scalar>());
+        reduce(stats_.nSolved, sumOp<label>());
+        reduce(remeshDelta, sumOp<scalar>());
+        allGatherBoundCharge(sigmaB);
+    }
+    remeshOffset_ += remeshDelta;
     lastSigmaB_.swap(sigmaB);
-    stats_.nShapes = shapeIndex_.size();
+    stats_.nShapes = returnReduce(label(shapeIndex_.size()), maxOp<label>());
     if (writeTime)
     {
         writeState();
