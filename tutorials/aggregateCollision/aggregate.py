@@ -14,7 +14,8 @@ the end of a run:
                     energy exceeds the point-charge binding k q^2/r (the
                     dipole terms decay as r^-4; spin may turn into
                     separation in a later contact)
-    rebound         1 and 2 bound, 3 more than 0.1 c from both and leaving
+    rebound         1 and 2 bound, 3 more than 0.1 c from both and moving
+                    away from their centre of mass
     sticking        every pair within 0.05 c (in contact or nearly)
     undecided       none of these
 
@@ -103,6 +104,13 @@ def pair_energy(parts, col):
             + KC*q[0]*q[1]/np.linalg.norm(x[0] - x[1]))
 
 
+def leaving(parts, col):
+    """Does 3 move away from the centre of mass of 1 and 2 at the end?"""
+    x = [np.array([p[-1, col[c]] for c in ("x", "y", "z")]) for p in parts]
+    v = [np.array([p[-1, col[c]] for c in ("Ux", "Uy", "Uz")]) for p in parts]
+    return np.dot(v[2] - 0.5*(v[0] + v[1]), x[2] - 0.5*(x[0] + x[1])) > 0
+
+
 def analyse(run):
     t, parts, col = read_history(run)
     step = max(1, len(t)//400)          # ~400 samples for the plots
@@ -111,11 +119,11 @@ def analyse(run):
         ks.append(len(t) - 1)
     g = np.array([gaps(parts, col, k) for k in ks])
     tU, U, exe, steps = read_log(run)
-    # Outcome from the last sample and one 10 % of the run earlier
-    g1, g0 = g[-1], g[int(0.9*(len(g) - 1))]
+    # Outcome from the last sample
+    g1 = g[-1]
     if g1[0] > 0.1*C and pair_energy(parts, col) > 0:
         outcome = "fragmentation"
-    elif min(g1[1], g1[2]) > 0.1*C and min(g1[1], g1[2]) > min(g0[1], g0[2]):
+    elif min(g1[1], g1[2]) > 0.1*C and leaving(parts, col):
         outcome = "rebound"
     elif (g1 < 0.05*C).all():
         outcome = "sticking"
