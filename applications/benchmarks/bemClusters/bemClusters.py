@@ -1,34 +1,38 @@
 #!/usr/bin/env python3
 """BEM clusters against all-particle BEM on a cluster-forming scene.
 
-Scene: --n (300) prolate ellipsoids (semi-axes 1 x 0.5 x 0.5 mm, epsilonR
-10, charges +-q of random sign, random orientations, small random
+Scene: --n (300) prolates (semi-axes 1 x 0.5 x 0.5 mm, or a/b = --aspect;
+epsilonR 10, charges +-q of random sign, random orientations, small random
 velocities) placed without overlap in a closed cube at solid fraction --phi
 (0.04), no gravity, ellipsoidCollision (e 0.7). A formation run (far field
-cutoffCoulomb + nearField inducedDipole) lets oppositely charged parcels
-attract and stick into pairs and small aggregates. From the formed state
-the same steps are run as
+cutoffCoulomb over the whole box + nearField inducedDipole) lets
+oppositely charged parcels attract and stick into aggregates, to t =
+--form. From the formed state the rungs
 
-    far      cutoffCoulomb alone (point charges)
-    dipoles  + nearField inducedDipole (defaults)
-    bem      + nearField bem (defaults: clusterGap 1, 1200 patches per
-             parcel, isolated parcels: inducedDipole)
-    allBem   + nearField bem with clusterGap 1e6: every parcel in one
-             cluster (all-particle BEM, the paper's approach)
+    far       cutoffCoulomb alone (point charges)
+    dipoles   + nearField inducedDipole (defaults)
+    bem       + nearField bem (defaults: clusterGap 1, 1200 patches per
+              parcel, isolated parcels: inducedDipole)
+    bem-gap2  + nearField bem with clusterGap 2
+    bem-gap4  + nearField bem with clusterGap 4
+    allBem    + nearField bem with clusterGap 1e6: every parcel in one
+              cluster (all-particle BEM, the paper's approach)
 
-in turns, --rounds times (far, dipoles and bem --steps steps, allBem
---all-steps steps). The cost of a run is taken between its first and last
-logged step (start-up excluded) and split by the log's cumulative CPU
-times (contact, far field, dipoles, BEM clusters, rest). Ratios are to the
-far-field run of the same round; medians over the rounds.
+run in turns, --rounds times (far and dipoles 10 x --steps steps, the
+cluster rungs --steps, allBem --all-steps). The cost of a run is taken
+between its first and last logged step (start-up excluded) and split by
+the log's cumulative CPU times (contact, far field, dipoles, BEM clusters,
+rest); ratios are per round to the point-charge run, medians over rounds.
 
-Accuracy: one step of bem and of allBem from the formed state (fE, tE
-written); the forces and torques of the parcels in bem's clusters against
-allBem's, and those of the isolated parcels (dipole rung) separately.
+Accuracy: one step of each rung from the formed state (fE, tE written);
+forces and torques against allBem's as relative RMS errors, for the
+parcels in the rung's clusters (the members written in the cloud's output
+properties) and for the others.
 
     bemClusters.py [--n 300] [--phi 0.04] [--q 5e-11] [--form 0.2]
-                   [--steps 20] [--all-steps 3] [--rounds 3] [--rcut 0]
-                   [--reuse] [--no-accuracy] [--no-cost]
+                   [--aspect 2] [--steps 20] [--all-steps 3] [--rounds 3]
+                   [--rcut 0] [--runs dir] [--reuse] [--no-accuracy]
+                   [--no-cost]
 """
 import argparse
 import os
@@ -308,9 +312,14 @@ def main():
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--no-accuracy", action="store_true")
     ap.add_argument("--no-cost", action="store_true")
+    ap.add_argument("--aspect", type=float, default=2,
+                    help="a/b of the prolates (1: spheres, no free-charge quadrupole)")
+    ap.add_argument("--runs", default=os.path.join(HERE, "runs"))
     args = ap.parse_args()
+    global B
+    B = A/args.aspect
 
-    runs = os.path.join(HERE, "runs")
+    runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
     base = os.path.join(runs, "base")
     L = box_side(args.n, args.phi)
