@@ -43,3 +43,19 @@ def read_positions(path):
     text = open(path).read().split("// * * *", 1)[-1]
     rows = re.findall(r"\(\s*([-+0-9.eE]+)\s+([-+0-9.eE]+)\s+([-+0-9.eE]+)\s*\)\s+-?\d+", text)
     return np.array(rows, dtype=float).reshape(-1, 3)
+
+
+def read_particle_history(case, cloud="cloud"):
+    """The particleHistory function object's samples of a case (all its
+    start-time folders, in order): the data as an (N, columns) array and
+    the column index of each header name."""
+    import glob
+    import os
+    files = sorted(glob.glob(os.path.join(
+        case, "postProcessing", "lagrangian", cloud, "particleHistory", "*",
+        "particleHistory.dat")))
+    if not files:
+        raise FileNotFoundError(f"{case}: no particleHistory.dat")
+    header = open(files[0]).readlines()[1].lstrip("# ").split()
+    data = np.vstack([np.loadtxt(f, ndmin=2) for f in files])
+    return data, {h: i for i, h in enumerate(header)}

@@ -24,14 +24,15 @@ Runs are named <rung>-v<v0>. Prints a table; with --expect, PASS/FAIL
 lines for the expected outcomes.
 """
 import argparse
-import glob
 import os
 import re
 import sys
 
 import numpy as np
 
-import ellipsoidGap as eg
+sys.path.insert(0, os.path.join(os.environ.get("CHARGEDFOAM_DIR", ""), "etc", "python"))
+import ellipsoidGap as eg  # noqa: E402
+from foamLagrangian import read_particle_history  # noqa: E402
 
 C = 100e-6                      # semi-minor axis [m]
 SEMI = np.array([200e-6, C, C])
@@ -43,11 +44,7 @@ RUNGS = {"pointCharges": "point charges", "dipoles": "induced dipoles",
 
 
 def read_history(run):
-    f = sorted(glob.glob(os.path.join(
-        run, "postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat")))[0]
-    header = open(f).readlines()[1].lstrip("# ").split()
-    data = np.loadtxt(f)
-    col = {h: i for i, h in enumerate(header)}
+    data, col = read_particle_history(run)
     parts = [data[data[:, 2] == k] for k in range(3)]
     n = min(len(p) for p in parts)
     return parts[0][:n, 0], [p[:n] for p in parts], col

@@ -15,7 +15,6 @@ pair terms). Writes attraction.png.
 
 Usage: attraction.py <caseDir>; last line PASS: ... or FAIL: ...
 """
-import glob
 import math
 import os
 import sys
@@ -24,6 +23,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.environ.get("CHARGEDFOAM_DIR", ""), "etc", "python"))
 import twoDielectricSpheres as tds  # noqa: E402
+from foamLagrangian import read_particle_history  # noqa: E402
 
 EPS0 = 8.8541878128e-12
 KC = 1/(4*math.pi*EPS0)
@@ -74,11 +74,7 @@ def integrate(force, d0, times, dMin=0.0):
 
 
 def read_history(case):
-    f = sorted(glob.glob(os.path.join(
-        case, "postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat")))[0]
-    header = open(f).readlines()[1].lstrip("# ").split()
-    data = np.loadtxt(f)
-    col = {h: i for i, h in enumerate(header)}
+    data, col = read_particle_history(case)
     p1, p2 = data[data[:, 2] == 0], data[data[:, 2] == 1]
     return p1[:, 0], p1, p2, col
 

@@ -49,6 +49,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "etc", "python"))
 from foamLagrangian import read_field   # noqa: E402
+from foamCase import run_logged, set_entry   # noqa: E402
 
 DT = 1e-4
 A, B = 1e-3, 5e-4          # semi-axes [m]: a x b x b
@@ -159,21 +160,6 @@ NEAR = {
 BEM_RUNGS = ("bem", "bem-gap2", "bem-gap4")
 
 
-def sh(cmd, cwd, log):
-    with open(os.path.join(cwd, log), "w") as f:
-        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
-    if r.returncode:
-        tail = open(os.path.join(cwd, log)).read()[-3000:]
-        sys.exit(f"{' '.join(cmd)} failed in {cwd} (see {log}):\n{tail}")
-
-
-def set_entry(path, key, value):
-    s = open(path).read()
-    s, n = re.subn(rf"^{key}\s+.*?;", f"{key} {value};", s, count=1, flags=re.M)
-    assert n == 1, (path, key)
-    open(path, "w").write(s)
-
-
 def box_side(n, phi):
     return (n*4/3*np.pi*A*B*B/phi)**(1/3)
 
@@ -246,9 +232,9 @@ def prepare(base, args, L, rcut):
     cd = os.path.join(base, "system/controlDict")
     set_entry(cd, "endTime", "%.10g" % args.form)
     set_entry(cd, "writeInterval", int(round(args.form/DT)))
-    sh(["blockMesh"], base, "log.blockMesh")
+    run_logged(["blockMesh"], base, "log.blockMesh")
     t0 = time.time()
-    sh(["chargedParticleFoam"], base, "log.form")
+    run_logged(["chargedParticleFoam"], base, "log.form")
     return time.time() - t0
 
 
@@ -372,7 +358,7 @@ def accuracy(base, runs, t0, rcut):
     for near in ("far", "dipoles") + BEM_RUNGS + ("allBem",):
         run = os.path.join(runs, "acc-" + near)
         variant(base, run, t0, 1, near, rcut, write=True)
-        sh(["chargedParticleFoam"], run, "log.chargedParticleFoam")
+        run_logged(["chargedParticleFoam"], run, "log.chargedParticleFoam")
         res[near] = one_step_fields(run, t0 + DT)
         rows[near] = parse_log(os.path.join(run, "log.chargedParticleFoam"))[-1]
     ids = res["allBem"][0]
@@ -424,7 +410,7 @@ def run_cost(base, runs, t0, near, steps, rcut):
     and the split of that cost by the log's cumulative CPU times."""
     run = os.path.join(runs, "cost-" + near)
     variant(base, run, t0, steps, near, rcut)
-    sh(["chargedParticleFoam"], run, "log.chargedParticleFoam")
+    run_logged(["chargedParticleFoam"], run, "log.chargedParticleFoam")
     rows = [r for r in parse_log(os.path.join(run, "log.chargedParticleFoam")) if "far" in r]
     a, b = rows[0], rows[-1]
     n = len(rows) - 1

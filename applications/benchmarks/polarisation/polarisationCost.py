@@ -32,23 +32,12 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "etc", "python"))
+from foamCase import run_logged, set_entry   # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 DT = 1e-4
-
-
-def sh(cmd, cwd, log):
-    with open(os.path.join(cwd, log), "w") as f:
-        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
-    if r.returncode:
-        sys.exit(f"{' '.join(cmd)} failed in {cwd} (see {log})")
-
-
-def set_entry(path, key, value):
-    s = open(path).read()
-    s, n = re.subn(rf"^{key}\s+.*?;", f"{key} {value};", s, count=1, flags=re.M)
-    assert n == 1, (path, key)
-    open(path, "w").write(s)
 
 
 def prepare(base, n, q, settle):
@@ -72,8 +61,8 @@ def prepare(base, n, q, settle):
     cd = os.path.join(base, "system/controlDict")
     set_entry(cd, "endTime", settle)
     set_entry(cd, "writeInterval", int(round(settle/DT)))
-    sh(["blockMesh"], base, "log.blockMesh")
-    sh(["chargedParticleFoam"], base, "log.settle")
+    run_logged(["blockMesh"], base, "log.blockMesh")
+    run_logged(["chargedParticleFoam"], base, "log.settle")
 
 
 def variant(base, run, settle, steps, near):
@@ -108,7 +97,7 @@ def accuracy(runs, base, settle, dMax):
         run = os.path.join(runs, "acc-" + name)
         variant(base, run, settle, 1, near)
         set_entry(os.path.join(run, "system/controlDict"), "writeInterval", 1)
-        sh(["chargedParticleFoam"], run, "log.solver")
+        run_logged(["chargedParticleFoam"], run, "log.solver")
         return read_lagrangian(run, t1, "fE"), read_lagrangian(run, t1, "tE")
     f0, _ = one("farField", None)
     fRef, tRef = one("all", "rNear 1; tolerance 1e-12; ")
@@ -159,7 +148,7 @@ def main():
             run = os.path.join(runs, v)
             variant(base, run, args.settle, args.steps,
                     None if v == "farField" else opt)
-            sh(["chargedParticleFoam"], run, "log.solver")
+            run_logged(["chargedParticleFoam"], run, "log.solver")
             c, d = cost(run, args.steps)
             costs[v].append(c)
             if d:
