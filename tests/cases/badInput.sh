@@ -100,6 +100,10 @@ badCase zeroSolveInterval 'epsilonR +1;' 'epsilonR 1; nearField { type bem; solv
     'Entry solveInterval = 0 in .* is out of range: >= 1'
 badCase unknownIsolated 'epsilonR +1;' 'epsilonR 1; nearField { type bem; isolated multipole; }' \
     'Entry isolated multipole in .* is not one of: inducedDipole none'
+badCase unknownNeighbours 'epsilonR +1;' 'epsilonR 1; nearField { type bem; neighbours dipoles; }' \
+    'Entry neighbours dipoles in .* is not one of: multipoles pointCharges'
+badCase zeroMeshCache 'epsilonR +1;' 'epsilonR 1; nearField { type bem; meshCache 0; }' \
+    'Entry meshCache = 0 in .* is out of range: > 0'
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

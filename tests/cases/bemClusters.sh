@@ -5,7 +5,8 @@
 # field's own pair taken out again (directCoulomb = none for a lone pair),
 # 2 processors = serial, and two spheres released at a small gap against
 # the trajectory integrated from the exact force, solving every step and
-# every 5th (the bound charge carried in between).
+# every 5th (the bound charge carried in between); prolates near a cluster
+# (multipoles both ways) against all-particle BEM.
 . "$(dirname "$0")/common.sh.inc"
 
 staticCase()    # staticCase <dir> <bemClusterStatic.py write options>
@@ -101,6 +102,26 @@ e = np.abs(f[0] - f[1]).max()/np.abs(f[0]).max()
 print("%s: bemClusters.farFieldPair (a lone pair: directCoulomb + bem vs bem alone:"
       " force difference %.1e of the force, tol 1e-12)" % ("PASS" if e < 1e-12 else "FAIL", e))
 PYEOF
+
+# What clusters and the parcels near them see of each other: a third
+# prolate 1.2-3 b from a cluster of two, its multipoles at the members'
+# patches and the reaction, against all-particle BEM (and the far field's
+# point charges alone, neighbours pointCharges)
+mkdir -p "$work/neighbours"
+for v in multipoles pointCharges allBem
+do
+    copyCase twoChargedSpheres "$work/neighbours/$v"
+    (
+        cd "$work/neighbours/$v" || exit 1
+        sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
+        $PY "$tools/bemNeighbours.py" write . $v
+        setEndTime 1e-6
+        run blockMesh blockMesh
+        run solver chargedParticleFoam
+    ) || fail "bemClusters.neighbours ($v failed)"
+done
+$PY "$tools/bemNeighbours.py" compare "$work/neighbours" | tee "$work/neighbours/table.md" \
+    | grep -E '^(PASS|FAIL)'
 
 # Two like-charged spheres (radii 50 and 100 um, epsilonR 10) released
 # 0.3 a1 apart attract; their gap against the exact two-sphere force

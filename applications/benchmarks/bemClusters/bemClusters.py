@@ -52,6 +52,9 @@ from foamLagrangian import read_field   # noqa: E402
 from foamCase import run_logged, set_entry   # noqa: E402
 
 DT = 1e-4
+# Accuracy: forces of the second step from the formed state (the first
+# gives the clusters' members the multipoles their neighbours see)
+ACC_STEPS = 2
 A, B = 1e-3, 5e-4          # semi-axes [m]: a x b x b
 EPSR = 10
 
@@ -153,11 +156,12 @@ NEAR = {
     "far": "// no near field",
     "dipoles": "nearField { type inducedDipole; }",
     "bem": "nearField { type bem; }",
+    "bem-pc": "nearField { type bem; neighbours pointCharges; }",
     "bem-gap2": "nearField { type bem; clusterGap 2; }",
     "bem-gap4": "nearField { type bem; clusterGap 4; }",
     "allBem": "nearField { type bem; clusterGap 1e6; }",
 }
-BEM_RUNGS = ("bem", "bem-gap2", "bem-gap4")
+BEM_RUNGS = ("bem", "bem-pc", "bem-gap2", "bem-gap4")
 
 
 def box_side(n, phi):
@@ -270,6 +274,9 @@ def parse_log(path):
         m = re.search(r"CPU time \[s\] since start\s*= dipoles (\S+), BEM clusters (\S+)", s)
         if m:
             r["dip"], r["clu"] = float(m.group(1).rstrip(",")), float(m.group(2))
+        m = re.search(r"set-up of meshes and blocks (\S+)\)", s)
+        if m:
+            r["setup"] = float(m.group(1))
         m = re.search(r"BEM clusters\s*= (\d+) \((\d+) parcels, largest (\d+); (\d+) solved\), "
                       r"(\d+) GMRES iterations", s)
         if m:
@@ -357,9 +364,9 @@ def accuracy(base, runs, t0, rcut):
     res, rows = {}, {}
     for near in ("far", "dipoles") + BEM_RUNGS + ("allBem",):
         run = os.path.join(runs, "acc-" + near)
-        variant(base, run, t0, 1, near, rcut, write=True)
+        variant(base, run, t0, ACC_STEPS, near, rcut, write=True)
         run_logged(["chargedParticleFoam"], run, "log.chargedParticleFoam")
-        res[near] = one_step_fields(run, t0 + DT)
+        res[near] = one_step_fields(run, t0 + ACC_STEPS*DT)
         rows[near] = parse_log(os.path.join(run, "log.chargedParticleFoam"))[-1]
     ids = res["allBem"][0]
     for near in res:
@@ -376,7 +383,7 @@ def accuracy(base, runs, t0, rcut):
         # parcels in clusters: those of this rung, or of the default bem
         # for the rungs without clusters
         member = cluster_members(os.path.join(runs, "acc-" + (near if near in BEM_RUNGS else "bem")),
-                                 t0 + DT, ids)
+                                 t0 + ACC_STEPS*DT, ids)
         r = rows.get(near, {})
         desc = (f"{member.sum()} in {r['nClu']} (largest {r['largest']})"
                 if near in BEM_RUNGS else f"({member.sum()}, as bem's)")
@@ -417,7 +424,7 @@ def run_cost(base, runs, t0, near, steps, rcut):
     d = lambda k: (b.get(k, 0) - a.get(k, 0))/n
     split = dict(step=(b["exec"] - a["exec"])/n, contact=d("contact"), far=d("far"),
                  dipoles=d("dip") if near in BEM_RUNGS + ("allBem",) else d("near"),
-                 clusters=d("clu"))
+                 clusters=d("clu"), setup=d("setup"))
     split["rest"] = split["step"] - split["contact"] - split["far"] - split["dipoles"] - split["clusters"]
     split["gmres"] = statistics.mean(r.get("gmres", 0) for r in rows[1:])
     split["inClusters"] = statistics.mean(r.get("nIn", 0) for r in rows[1:])
@@ -443,14 +450,14 @@ def cost(base, runs, t0, rcut, args):
     print(f"\nCost per step, medians of {args.rounds} rounds in turns ({10*args.steps} steps without"
           f" BEM, {args.steps} with clusters, all-particle BEM {args.all_steps}; first logged"
           f" step excluded):")
-    print("| rung | step / point charges | contact | far field | dipoles | BEM clusters | rest "
-          "| parcels in clusters | GMRES iterations per step |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    print("| rung | step / point charges | contact | far field | dipoles | BEM clusters "
+          "| of which set-up | rest | parcels in clusters | GMRES iterations per step |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for near, _ in rungs:
         st = med(near, "step")
         frac = lambda key: f"{100*med(near, key)/st:.0f} %"
         print(f"| {near} | {ratio(near, 'far'):.3g} | {frac('contact')} | {frac('far')} | "
-              f"{frac('dipoles')} | {frac('clusters')} | {frac('rest')} | "
+              f"{frac('dipoles')} | {frac('clusters')} | {frac('setup')} | {frac('rest')} | "
               f"{med(near, 'inClusters'):.0f} / {per[near][0]['nParcels']} | "
               f"{med(near, 'gmres'):.3g} |")
     for near in BEM_RUNGS:

@@ -818,6 +818,10 @@ Foam::label Foam::bemSolver::shape
     const vector f = focus/max(mag(focus), VSMALL);
     for (label s = 0; s < label(shapes_.size()); ++s)
     {
+        if (!shapes_[s])
+        {
+            continue;
+        }
         const ellipsoidSurfaceMesh& m = *shapes_[s]->mesh;
         if
         (
@@ -1249,6 +1253,71 @@ Foam::vector Foam::bemSolver::boundDipole(const label i) const
         p += (a_[k]*sigmaB_[k])*(x_[k] - particles_[i].centre);
     }
     return kappa0_*p;
+}
+
+
+void Foam::bemSolver::releaseShape(const label shapeI)
+{
+    for (const particle& p : particles_)
+    {
+        if (p.shape == shapeI)
+        {
+            FatalErrorInFunction
+                << "Shape " << shapeI << " is in use by a particle"
+                << exit(FatalError);
+        }
+    }
+    shapes_[shapeI].reset();
+}
+
+
+Foam::scalar Foam::bemSolver::shapeBytes(const label shapeI) const
+{
+    const shapeData* sd = shapes_[shapeI].get();
+    if (!sd)
+    {
+        return 0;
+    }
+    const label n = sd->mesh->size();
+    // Mesh: centres, normals, areas, curvatures, 16 quadrature points and
+    // weights per patch, vertices and faces (about 600 bytes per patch)
+    scalar bytes = 600.0*n + 8.0*sd->selfGauss.size();
+    for (const auto& near : sd->nearBody)
+    {
+        bytes += sizeof(nearEntry)*near.capacity() + sizeof(near);
+    }
+    // PartialPivLU: the n x n factors and the permutation
+    bytes += sd->lu.size()*(8.0*n*n + 4.0*n);
+    return bytes;
+}
+
+
+Foam::scalarField Foam::bemSolver::mediumCharges(const label i) const
+{
+    const scalarField& sigmaF = particles_[i].sigmaF;
+    scalarField c(offset_[i + 1] - offset_[i]);
+    forAll(c, k)
+    {
+        const label j = offset_[i] + k;
+        c[k] = kappa0_*a_[j]*(sigmaF[k] + sigmaB_[j]);
+    }
+    return c;
+}
+
+
+Foam::pointMultipole Foam::bemSolver::multipole(const label i) const
+{
+    pointMultipole m;
+    m.x0 = particles_[i].centre;
+    const scalarField c(mediumCharges(i));
+    forAll(c, k)
+    {
+        const vector d = x_[offset_[i] + k] - m.x0;
+        m.q += c[k];
+        m.p += c[k]*d;
+        m.Q += c[k]*(3*sqr(d) - magSqr(d)*symmTensor::I);
+    }
+    return m;
 }
 
 

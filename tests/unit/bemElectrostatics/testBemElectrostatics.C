@@ -15,10 +15,14 @@
         depolarisation factors by quadrature, themselves checked against the
         closed form of a prolate spheroid;
       - treecode and fast multipole method against the direct sum; the
-        solver with the FMM matvec against the direct matvec.
+        solver with the FMM matvec against the direct matvec;
+      - multipole expansions (pointMultipole) against direct sums of point
+        charges, the uniform surface quadrupole against a fine mesh, the
+        BEM's dipole of a dielectric sphere in a uniform field (textbook).
 \*---------------------------------------------------------------------------*/
 
 #include "bemSolver.H"
+#include "pointMultipole.H"
 #include "bemTreecode.H"
 #include "bemFmm.H"
 #include "inducedDipole.H"
@@ -756,6 +760,113 @@ TEST(bemElectrostatics, InducedDipoleChargeNeutralSphere)
     const scalar Fex = 2*k*q*q*K*pow(R, 3)/pow(r, 5);
     EXPECT_NEAR(dm.forces()[0].x()/Fex, 1, 1e-6);
     EXPECT_NEAR(dm.forces()[1].x()/(-Fex), 1, 1e-6);
+}
+
+
+TEST(bemElectrostatics, PointMultipole)
+{
+    // A random charge distribution in the unit ball against its multipole
+    // expansion: the field's error is the octupole's, O(r^-5) against the
+    // monopole's r^-2 (relative r^-3); E = -grad phi by central differences
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<scalar> u(-0.577, 0.577);
+    std::vector<point> y;
+    std::vector<scalar> c;
+    pointMultipole m;
+    m.x0 = point(0.1, -0.2, 0.3);
+    for (label k = 0; k < 20; ++k)
+    {
+        y.push_back(m.x0 + vector(u(gen), u(gen), u(gen)));
+        c.push_back(u(gen) + 0.3);
+        const vector d = y.back() - m.x0;
+        m.q += c.back();
+        m.p += c.back()*d;
+        m.Q += c.back()*(3*sqr(d) - magSqr(d)*symmTensor::I);
+    }
+    auto direct = [&](const point& x)
+    {
+        vector E(Zero);
+        for (size_t k = 0; k < y.size(); ++k)
+        {
+            const vector r = x - y[k];
+            E += c[k]*r/pow(mag(r), 3);
+        }
+        return E;
+    };
+    const vector dir = vector(0.3, -0.8, 0.5)/mag(vector(0.3, -0.8, 0.5));
+    const scalar e10 =
+        mag(m.fieldOverK(m.x0 + 10*dir) - direct(m.x0 + 10*dir))
+       /mag(direct(m.x0 + 10*dir));
+    const scalar e20 =
+        mag(m.fieldOverK(m.x0 + 20*dir) - direct(m.x0 + 20*dir))
+       /mag(direct(m.x0 + 20*dir));
+    Info<< "multipole field error at r = 10, 20: " << e10 << ' ' << e20
+        << endl;
+    EXPECT_LT(e10, 1e-3);
+    EXPECT_GT(e10/e20, 6);      // ~8: the octupole order
+    const point x = m.x0 + 3*dir;
+    const scalar h = 1e-5;
+    for (direction d = 0; d < 3; ++d)
+    {
+        vector dx(Zero);
+        dx[d] = h;
+        const scalar Ed =
+            -(m.potentialOverK(x + dx) - m.potentialOverK(x - dx))/(2*h);
+        EXPECT_NEAR(Ed, m.fieldOverK(x)[d], 1e-8*mag(m.fieldOverK(x)));
+    }
+}
+
+
+TEST(bemElectrostatics, UniformSurfaceQuadrupole)
+{
+    // Quadrature against a fine surface mesh (an independent
+    // discretisation): sum a x x over the patches; a sphere has none
+    for (const vector s : {vector(1, 0.5, 0.5), vector(1, 0.7, 0.2)})
+    {
+        const symmTensor Q = uniformSurfaceQuadrupole(s);
+        bemSolver b(1);
+        const ellipsoidSurfaceMesh& mesh = b.mesh(b.shape(s, 8000));
+        symmTensor Qm(Zero);
+        forAll(mesh.areas(), k)
+        {
+            const vector& x = mesh.centres()[k];
+            Qm += mesh.areas()[k]*(3*sqr(x) - magSqr(x)*symmTensor::I);
+        }
+        Qm /= sum(mesh.areas());
+        Info<< "uniform surface quadrupole " << s << ": " << Q
+            << " mesh " << Qm << endl;
+        EXPECT_LT(mag(Q - Qm), 1e-3*mag(Q));
+    }
+    EXPECT_LT(mag(uniformSurfaceQuadrupole(vector(1, 1, 1))), 1e-12);
+}
+
+
+TEST(bemElectrostatics, BemMultipoleOfSphereInUniformField)
+{
+    // Neutral dielectric sphere R = 1 in E0: the bound charge's dipole is
+    // 4 pi eps0 K R^3 E0 and its quadrupole zero (textbook); a charged
+    // unpolarisable prolate (kappa_p = kappa_0) carries q and q Q_uniform
+    const scalar kp = 10, K = (kp - 1)/(kp + 2);
+    const vector E0(0, 0, 1e5);
+    bemSolver b(1);
+    const label sh = b.shape(vector(1, 1, 1), 1600);
+    b.addParticle(sh, point(0.5, 0, 0), tensor::I, kp, 0.0);
+    b.setExternalField(E0);
+    b.solve();
+    const pointMultipole m(b.multipole(0));
+    const vector pEx = 4*pi*eps0*K*E0;
+    EXPECT_LT(mag(m.p - pEx), 5e-3*mag(pEx));
+    EXPECT_LT(mag(m.q), 1e-6*mag(pEx));
+    EXPECT_LT(mag(m.Q), 1e-2*mag(pEx));
+
+    bemSolver c(1);
+    const vector s(1, 0.5, 0.5);
+    const scalar q = 1e-9;
+    c.addParticle(c.shape(s, 1600), point::zero, tensor::I, 1, q);
+    c.solve();
+    const pointMultipole mq(c.multipole(0));
+    EXPECT_NEAR(mq.q/q, 1, 1e-9);
+    EXPECT_LT(mag(mq.Q - q*uniformSurfaceQuadrupole(s)), 1e-2*mag(mq.Q));
 }
 
 

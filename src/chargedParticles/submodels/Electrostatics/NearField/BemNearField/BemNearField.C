@@ -6,9 +6,12 @@
 #include "ElectrostaticsModel.H"
 #include "cutoffPairs.H"
 #include "cpuTime.H"
+#include "pointMultipole.H"
+#include "pairwiseCoulomb.H"
 
 #include <algorithm>
 #include <numeric>
+#include <set>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -121,9 +124,11 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
     key[3] = bin;
     key[4] = lambda;
     key[5] = nPatches;
+    const label now = this->owner().db().time().timeIndex();
     auto iter = shapeIndex_.find(key);
     if (iter == shapeIndex_.end())
     {
+        const cpuTime timer;
         iter = shapeIndex_.emplace
         (
             key,
@@ -131,7 +136,10 @@ Foam::label Foam::BemNearField<CloudType>::shapeFor
         ).first;
         shapeKeys_.resize(max(label(shapeKeys_.size()), iter->second + 1));
         shapeKeys_[iter->second] = key;
+        shapeLastUse_.resize(shapeKeys_.size(), now);
+        setupTime_ += timer.elapsedCpuTime();
     }
+    shapeLastUse_[iter->second] = now;
     return iter->second;
 }
 
@@ -156,6 +164,45 @@ Foam::label Foam::BemNearField<CloudType>::shapeOf(const meshKey& key)
 
 
 template<class CloudType>
+void Foam::BemNearField<CloudType>::trimCache()
+{
+    const label now = this->owner().db().time().timeIndex();
+    std::vector<std::tuple<label, label, scalar>> unused;
+    scalar bytes = 0;
+    for (const auto& entry : shapeIndex_)
+    {
+        const label s = entry.second;
+        const scalar b = bem_->shapeBytes(s);
+        bytes += b;
+        if (shapeLastUse_[s] < now)
+        {
+            unused.emplace_back(shapeLastUse_[s], s, b);
+        }
+    }
+    if (bytes > meshCacheBytes_)
+    {
+        std::sort(unused.begin(), unused.end());
+        for (const auto& u : unused)
+        {
+            if (bytes <= meshCacheBytes_)
+            {
+                break;
+            }
+            const label s = std::get<1>(u);
+            bem_->releaseShape(s);
+            bytes -= std::get<2>(u);
+            shapeIndex_.erase(shapeKeys_[s]);
+            for (auto it = selfEnergy_.begin(); it != selfEnergy_.end();)
+            {
+                it = it->first.first == s ? selfEnergy_.erase(it) : ++it;
+            }
+        }
+    }
+    stats_.cacheBytes = bytes;
+}
+
+
+template<class CloudType>
 Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 (
     const label shapeI,
@@ -168,6 +215,7 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
     {
         // The member alone with a unit charge, no external field
         bem_->clearParticles();
+        bem_->setExternalField(bemSolver::fieldFunction());
         bem_->addParticle(shapeI, Zero, tensor::I, kappa, 1.0);
         bem_->solve();
         iter = selfEnergy_.emplace(key, bem_->energy()).first;
@@ -182,6 +230,8 @@ void Foam::BemNearField<CloudType>::writeState() const
     labelList ids(2*lastSigmaB_.size());
     List<meshKey> meshes(lastSigmaB_.size());
     List<scalarField> sigmaB(lastSigmaB_.size());
+    vectorField dipoles(lastSigmaB_.size(), Zero);
+    symmTensorField quadrupoles(lastSigmaB_.size(), Zero);
     label k = 0;
     for (const auto& entry : lastSigmaB_)
     {
@@ -189,12 +239,20 @@ void Foam::BemNearField<CloudType>::writeState() const
         ids[2*k + 1] = entry.first.second();
         meshes[k] = entry.second.first;
         sigmaB[k] = entry.second.second;
+        const auto m = lastMoments_.find(entry.first);
+        if (m != lastMoments_.end())
+        {
+            dipoles[k] = m->second.first;
+            quadrupoles[k] = m->second.second;
+        }
         ++k;
     }
     dictionary state;
     state.add("ids", ids);
     state.add("meshes", meshes);
     state.add("sigmaB", sigmaB);
+    state.add("dipoles", dipoles);
+    state.add("quadrupoles", quadrupoles);
     state.add("remeshOffset", remeshOffset_);
     this->owner().outputProperties().set("bemNearField", state);
 }
@@ -203,16 +261,21 @@ void Foam::BemNearField<CloudType>::writeState() const
 template<class CloudType>
 void Foam::BemNearField<CloudType>::allGatherBoundCharge
 (
-    std::map<labelPair, std::pair<meshKey, scalarField>>& sigmaB
+    std::map<labelPair, std::pair<meshKey, scalarField>>& sigmaB,
+    std::map<labelPair, bodyMoments>& moments
 )
 {
     const label me = Pstream::myProcNo();
     List<labelList> ids(Pstream::nProcs());
     List<List<meshKey>> meshes(Pstream::nProcs());
     List<List<scalarField>> values(Pstream::nProcs());
+    List<vectorField> dipoles(Pstream::nProcs());
+    List<symmTensorField> quadrupoles(Pstream::nProcs());
     ids[me].setSize(2*sigmaB.size());
     meshes[me].setSize(sigmaB.size());
     values[me].setSize(sigmaB.size());
+    dipoles[me].setSize(sigmaB.size());
+    quadrupoles[me].setSize(sigmaB.size());
     label k = 0;
     for (const auto& entry : sigmaB)
     {
@@ -220,6 +283,9 @@ void Foam::BemNearField<CloudType>::allGatherBoundCharge
         ids[me][2*k + 1] = entry.first.second();
         meshes[me][k] = entry.second.first;
         values[me][k] = entry.second.second;
+        const bodyMoments& m = moments.at(entry.first);
+        dipoles[me][k] = m.first;
+        quadrupoles[me][k] = m.second;
         ++k;
     }
     Pstream::gatherList(ids);
@@ -228,17 +294,43 @@ void Foam::BemNearField<CloudType>::allGatherBoundCharge
     Pstream::scatterList(meshes);
     Pstream::gatherList(values);
     Pstream::scatterList(values);
+    Pstream::gatherList(dipoles);
+    Pstream::scatterList(dipoles);
+    Pstream::gatherList(quadrupoles);
+    Pstream::scatterList(quadrupoles);
     forAll(ids, proci)
     {
         forAll(meshes[proci], k)
         {
+            const labelPair id(ids[proci][2*k], ids[proci][2*k + 1]);
             sigmaB.emplace
             (
-                labelPair(ids[proci][2*k], ids[proci][2*k + 1]),
+                id,
                 std::make_pair(meshes[proci][k], values[proci][k])
+            );
+            moments.emplace
+            (
+                id,
+                bodyMoments(dipoles[proci][k], quadrupoles[proci][k])
             );
         }
     }
+}
+
+
+template<class CloudType>
+const Foam::symmTensor& Foam::BemNearField<CloudType>::unitQuadrupole
+(
+    const vector& s
+) const
+{
+    const std::array<scalar, 3> key{{s.x(), s.y(), s.z()}};
+    auto iter = unitQuadrupole_.find(key);
+    if (iter == unitQuadrupole_.end())
+    {
+        iter = unitQuadrupole_.emplace(key, uniformSurfaceQuadrupole(s)).first;
+    }
+    return iter->second;
 }
 
 
@@ -257,13 +349,22 @@ void Foam::BemNearField<CloudType>::readState()
     const labelList ids(state.lookup("ids"));
     const List<meshKey> meshes(state.lookup("meshes"));
     const List<scalarField> sigmaB(state.lookup("sigmaB"));
+    const vectorField dipoles
+    (
+        state.lookupOrDefault("dipoles", vectorField(meshes.size(), Zero))
+    );
+    const symmTensorField quadrupoles
+    (
+        state.lookupOrDefault
+        (
+            "quadrupoles", symmTensorField(meshes.size(), Zero)
+        )
+    );
     forAll(meshes, k)
     {
-        lastSigmaB_.emplace
-        (
-            labelPair(ids[2*k], ids[2*k + 1]),
-            std::make_pair(meshes[k], sigmaB[k])
-        );
+        const labelPair id(ids[2*k], ids[2*k + 1]);
+        lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
+        lastMoments_.emplace(id, bodyMoments(dipoles[k], quadrupoles[k]));
     }
 }
 
@@ -285,6 +386,15 @@ Foam::BemNearField<CloudType>::BemNearField
         dict.template lookupOrDefault<word>("isolated", "inducedDipole")
     ),
     solveInterval_(dict.template lookupOrDefault<label>("solveInterval", 1)),
+    meshCacheBytes_
+    (
+        1048576*dict.template lookupOrDefault<scalar>("meshCache", 2000)
+    ),
+    multipoleNeighbours_
+    (
+        dict.template lookupOrDefault<word>("neighbours", "multipoles")
+     == "multipoles"
+    ),
     controls_
     (
         [&dict]()
@@ -302,6 +412,7 @@ Foam::BemNearField<CloudType>::BemNearField
     stats_(),
     dipoleTime_(0),
     clusterTime_(0),
+    setupTime_(0),
     remeshOffset_(0),
     stateRead_(false)
 {
@@ -327,6 +438,25 @@ Foam::BemNearField<CloudType>::BemNearField
             << dict.name().c_str() << " is out of range: >= 1 (time steps"
             << " between BEM solves)" << exit(FatalIOError);
     }
+    if (!(meshCacheBytes_ > 0) || !std::isfinite(meshCacheBytes_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry meshCache = " << meshCacheBytes_/1048576 << " in "
+            << dict.name().c_str() << " is out of range: > 0 (MB of meshes"
+            << " and factorised blocks kept per processor)"
+            << exit(FatalIOError);
+    }
+    const word neighbours
+    (
+        dict.template lookupOrDefault<word>("neighbours", "multipoles")
+    );
+    if (neighbours != "multipoles" && neighbours != "pointCharges")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry neighbours " << neighbours << " in "
+            << dict.name().c_str() << " is not one of: multipoles"
+            << " pointCharges" << exit(FatalIOError);
+    }
     if (isolated_ != "inducedDipole" && isolated_ != "none")
     {
         FatalIOErrorInFunction(dict)
@@ -335,7 +465,8 @@ Foam::BemNearField<CloudType>::BemNearField
     }
     Info<< "    BEM clusters: surface gaps below " << clusterGap_
         << " x the smaller semi-axis, " << nPatches_ << " patches per parcel,"
-        << " isolated parcels: " << isolated_ << endl;
+        << " isolated parcels: " << isolated_ << ", parcels near a cluster: "
+        << neighbours << endl;
 }
 
 
@@ -350,10 +481,13 @@ Foam::BemNearField<CloudType>::BemNearField
     nPatches_(nf.nPatches_),
     isolated_(nf.isolated_),
     solveInterval_(nf.solveInterval_),
+    meshCacheBytes_(nf.meshCacheBytes_),
+    multipoleNeighbours_(nf.multipoleNeighbours_),
     controls_(nf.controls_),
     stats_(),
     dipoleTime_(0),
     clusterTime_(0),
+    setupTime_(0),
     remeshOffset_(0),
     stateRead_(false)
 {}
@@ -385,6 +519,7 @@ void Foam::BemNearField<CloudType>::correct
         bem_.reset(new bemSolver(kappa0, controls_));
         shapeIndex_.clear();
         shapeKeys_.clear();
+        shapeLastUse_.clear();
     }
     if (!stateRead_)
     {
@@ -495,6 +630,118 @@ void Foam::BemNearField<CloudType>::correct
         }
     }
 
+    // Clusters numbered in their sorted order; the cluster of each
+    // gathered parcel (-1: none)
+    std::vector<const DynamicList<label>*> clusterList;
+    labelList clusterOf(N, -1);
+    for (const auto& c : clusters)
+    {
+        for (const label g : c.second)
+        {
+            clusterOf[g] = clusterList.size();
+        }
+        clusterList.push_back(&c.second);
+    }
+    const label nC = clusterList.size();
+
+    // Parcels near each cluster (centre within the near-field radius of a
+    // member's) and what they see of each other beyond point charges, as
+    // multipoles (pointMultipole): a member of another cluster its charge
+    // as of its last solve (carried in the body frame), any other parcel
+    // its free charge (uniform over its surface: a quadrupole) and its
+    // induced dipole. Members see them at their patches in the BEM; the
+    // others get the reaction (Newton's third law between the patch
+    // charges and the multipole) and see the members' dipoles and
+    // quadrupoles in their dipole solve.
+    const scalar kC =
+        1/(4*constant::mathematical::pi
+           *pairwiseCoulomb::vacuumPermittivity*kappa0);
+    std::vector<std::vector<label>> neighbours(nC);
+    List<pointMultipole> multipoles(N);
+    // The free charge's quadrupole (uniform over the surface)
+    symmTensorField Qfree(N, Zero);
+    vectorField Emembers(N, Zero);
+    if (multipoleNeighbours_ && nC)
+    {
+        scalar dMax = 0;
+        forAll(S, g)
+        {
+            if (K[g] != kappa0)
+            {
+                dMax = max(dMax, 2*cmptMax(S[g]));
+            }
+        }
+        std::vector<std::set<label>> near(nC);
+        forPairsWithinCutoff
+        (
+            x, x, this->rNearFor(dMax), 0,
+            [&](const label a, const label b, const vector&, const scalar)
+            {
+                if (a < b && clusterOf[a] != clusterOf[b])
+                {
+                    if (clusterOf[a] >= 0)
+                    {
+                        near[clusterOf[a]].insert(rank[b]);
+                    }
+                    if (clusterOf[b] >= 0)
+                    {
+                        near[clusterOf[b]].insert(rank[a]);
+                    }
+                }
+            }
+        );
+        for (label c = 0; c < nC; ++c)
+        {
+            for (const label r : near[c])
+            {
+                neighbours[c].push_back(order[r]);
+            }
+        }
+        forAll(multipoles, g)
+        {
+            pointMultipole& m = multipoles[g];
+            m.x0 = x[g];
+            m.q = q[g];
+            Qfree[g] = q[g]*transform(R[g], unitQuadrupole(S[g]));
+            const auto last =
+                clusterOf[g] < 0
+              ? lastMoments_.end()
+              : lastMoments_.find(labelPair(ids[2*g], ids[2*g + 1]));
+            if (last != lastMoments_.end())
+            {
+                m.p = R[g] & last->second.first;
+                m.Q = transform(R[g], last->second.second);
+            }
+            else
+            {
+                m.Q = Qfree[g];
+            }
+        }
+
+        // The members' dipoles and quadrupoles at the other parcels near
+        // their clusters (their charges are the far field's)
+        for (label c = 0; c < nC; ++c)
+        {
+            for (const label j : neighbours[c])
+            {
+                if (clusterOf[j] < 0)
+                {
+                    for (const label h : *clusterList[c])
+                    {
+                        pointMultipole m(multipoles[h]);
+                        m.q = 0;
+                        Emembers[j] += kC*m.fieldOverK(x[j]);
+                    }
+                }
+            }
+        }
+        i = 0;
+        for (auto& p : cloud)
+        {
+            p.E() += Emembers[myStart + i++];
+        }
+    }
+
     // Isolated parcels: dipoles (cluster members unpolarisable there) or
     // point charges
     cpuTime timer;
@@ -522,8 +769,10 @@ void Foam::BemNearField<CloudType>::correct
     stats_.nInContact = 0;
     if (clusters.empty())
     {
+        trimCache();
         stats_.nShapes = shapeIndex_.size();
         lastSigmaB_.clear();
+        lastMoments_.clear();
         if (writeTime)
         {
             writeState();
@@ -540,6 +789,27 @@ void Foam::BemNearField<CloudType>::correct
         myE[i++] = p.E();
     }
     const vectorField E(this->gatherAll(myE, start));
+    // The isolated parcels' induced dipoles (pair terms within the dipole
+    // solve's radius)
+    const scalar rDipole2 =
+        (isolated_ == "inducedDipole" && this->nPolarisable())
+      ? sqr(this->rNear()) : -1;
+    if (multipoleNeighbours_)
+    {
+        i = 0;
+        for (const auto& p : cloud)
+        {
+            myE[i++] = p.dipole();
+        }
+        const vectorField Pd(this->gatherAll(myE, start));
+        forAll(multipoles, g)
+        {
+            if (clusterOf[g] < 0)
+            {
+                multipoles[g].p = Pd[g];
+            }
+        }
+    }
 
     const bool solveNow =
         this->owner().db().time().timeIndex() % solveInterval_ == 0;
@@ -549,7 +819,10 @@ void Foam::BemNearField<CloudType>::correct
     // order (every processor holds the whole cluster's inputs, so the
     // result does not depend on which one)
     vectorField F(N, Zero), M(N, Zero), P(N, Zero);
+    // Forces and torques on the parcels near clusters (not members)
+    vectorField Fout(N, Zero), Mout(N, Zero);
     std::map<labelPair, std::pair<meshKey, scalarField>> sigmaB;
+    std::map<labelPair, bodyMoments> moments;
     scalar remeshDelta = 0;
     label clusterI = -1;
     for (const auto& c : clusters)
@@ -601,8 +874,36 @@ void Foam::BemNearField<CloudType>::correct
                 max(nPatches_, controls_.maxPreconditionerPatches)
             );
             const bool sphere = cmptMin(S[g]) == cmptMax(S[g]);
+            // Hysteresis: a member keeps its last mesh while that is at
+            // most one grading level finer than its gap asks for and (an
+            // ellipsoid) graded within 0.3 rad of the neighbour's
+            // direction (the 64 directions are ~0.45 rad apart), so that
+            // a gap or a direction oscillating about a level's edge does
+            // not remesh (and re-solve) every step
+            const auto last =
+                lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
+            bool keep = false;
+            if (last != lastSigmaB_.end())
+            {
+                const meshKey& k = last->second.first;
+                keep =
+                    k[0] == S[g].x() && k[1] == S[g].y() && k[2] == S[g].z()
+                 && k[5] == nP
+                 && k[4] <= lambda*(1 + 1e-9)
+                 && lambda <= k[4]*Foam::pow(2.0, 0.25)*(1 + 1e-9);
+                if (keep && !sphere && k[3] >= 0)
+                {
+                    const vector dir = fibonacciDirection
+                    (
+                        std::lround(k[3]), nFocusDirections
+                    );
+                    keep = (dir & (R[g].T() & u)) > Foam::cos(0.3);
+                }
+            }
             shapes[m] =
-                sphere
+                keep
+              ? shapeOf(last->second.first)
+              : sphere
               ? shapeFor(S[g], vector(1, 0, 0), lambda, nP)
               : shapeFor(S[g], R[g].T() & u, lambda, nP);
             poses[m] = sphere ? rotationFromX(u) : R[g];
@@ -629,12 +930,47 @@ void Foam::BemNearField<CloudType>::correct
             }
         }
 
+        // The parcels near the cluster as multipoles at the patches, in
+        // place of what E holds of them at the centres (the far field's
+        // point charge, the dipole solve's dipole field)
+        const std::vector<label>& nbrs = neighbours[clusterI];
+        std::vector<pointMultipole> sources;
+        for (const label j : nbrs)
+        {
+            sources.push_back(multipoles[j]);
+            forAll(mem, m)
+            {
+                const label g = mem[m];
+                Eext[m] -= farField.pointChargeField(x[g], x[j], q[j]);
+                if (clusterOf[j] < 0 && magSqr(x[g] - x[j]) < rDipole2)
+                {
+                    pointMultipole d;
+                    d.x0 = x[j];
+                    d.p = multipoles[j].p;
+                    Eext[m] -= kC*d.fieldOverK(x[g]);
+                }
+            }
+        }
+        const bemSolver::fieldFunction Enear =
+            sources.empty()
+          ? bemSolver::fieldFunction()
+          : [&sources, kC](const point& y)
+            {
+                vector E(Zero);
+                for (const pointMultipole& s : sources)
+                {
+                    E += s.fieldOverK(y);
+                }
+                return vector(kC*E);
+            };
+
         // The cluster on the given meshes, GMRES started from each
         // member's last bound charge on the same mesh; returns how many
         // members have one
         auto setUp = [&](const labelList& meshes)
         {
             bem_->clearParticles();
+            bem_->setExternalField(Enear);
             label carried = 0;
             forAll(mem, m)
             {
@@ -672,6 +1008,7 @@ void Foam::BemNearField<CloudType>::correct
                     << ")" << exit(FatalError);
             }
             stats_.gmresIterations += info.iterations;
+            setupTime_ += info.setupTime;
             stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
         };
         // Energy (Eq. 51) beyond the far field's, of the last solve: the
@@ -685,6 +1022,46 @@ void Foam::BemNearField<CloudType>::correct
                 const label g = mem[m];
                 U -= sqr(q[g])*selfEnergy_.at(std::make_pair(meshes[m], K[g]));
                 U -= 0.5*(bem_->boundDipole(m) & Eext[m]);
+            }
+            // The neighbours (linear media: 1/2 sum of free charge x
+            // potential): with f the free and b the bound charges,
+            // U(fA, fj) + 1/2 U(fA, bj) + 1/2 U(bA, fj), less the far
+            // field's point-charge pairs. An isolated parcel's dipole
+            // has its 1/2 U(bj, A) in the dipole solve's energy; a pair
+            // of clusters is counted half from each side
+            for (const label j : nbrs)
+            {
+                const bool member = clusterOf[j] >= 0;
+                const scalar w = member ? 0.5 : 1;
+                pointMultipole fj, bj;
+                fj.x0 = bj.x0 = x[j];
+                fj.q = q[j];
+                fj.Q = Qfree[j];
+                if (member)
+                {
+                    bj.p = multipoles[j].p;
+                    bj.Q = multipoles[j].Q - Qfree[j];
+                }
+                forAll(mem, m)
+                {
+                    const scalarField& a = bem_->mesh(meshes[m]).areas();
+                    const scalarField& sf = bem_->sigmaF(m);
+                    const scalarField c(bem_->mediumCharges(m));
+                    const SubList<point> y(bem_->centres(m));
+                    scalar Um = 0;
+                    forAll(c, k)
+                    {
+                        const scalar f = a[k]*sf[k];
+                        const scalar phiF = fj.potentialOverK(y[k]);
+                        Um += f*phiF + 0.5*(c[k] - f)*phiF;
+                        if (member)
+                        {
+                            Um += 0.5*f*bj.potentialOverK(y[k]);
+                        }
+                    }
+                    const label h = mem[m];
+                    U += w*kC*(Um - q[h]*q[j]/mag(x[h] - x[j]));
+                }
             }
             return U;
         };
@@ -733,6 +1110,12 @@ void Foam::BemNearField<CloudType>::correct
             F[g] = bem_->forces()[m];
             M[g] = bem_->torques()[m];
             P[g] = bem_->boundDipole(m);
+            const pointMultipole mm(bem_->multipole(m));
+            moments.emplace
+            (
+                labelPair(ids[2*g], ids[2*g + 1]),
+                bodyMoments(R[g].T() & mm.p, transform(R[g].T(), mm.Q))
+            );
             sigmaB.emplace
             (
                 labelPair(ids[2*g], ids[2*g + 1]),
@@ -744,6 +1127,46 @@ void Foam::BemNearField<CloudType>::correct
             );
         }
         stats_.energy += U;
+
+        // Reaction on the other parcels near the cluster: minus the force
+        // and moment of their multipoles on the members' patch charges, in
+        // place of the far field's point-charge pair force, the dipole
+        // solve's dipole-charge pair force and the torque p x E of what
+        // their E holds of the members
+        for (const label j : nbrs)
+        {
+            if (clusterOf[j] >= 0)
+            {
+                continue;
+            }
+            const pointMultipole& mj = multipoles[j];
+            forAll(mem, m)
+            {
+                const scalarField c(bem_->mediumCharges(m));
+                const SubList<point> y(bem_->centres(m));
+                forAll(c, k)
+                {
+                    const vector f = (kC*c[k])*mj.fieldOverK(y[k]);
+                    Fout[j] -= f;
+                    Mout[j] -= (y[k] - x[j]) ^ f;
+                }
+                const label h = mem[m];
+                const vector Eq = farField.pointChargeField(x[j], x[h], q[h]);
+                Fout[j] -= q[j]*Eq;
+                const vector r = x[j] - x[h];
+                const scalar r2 = magSqr(r);
+                if (r2 < rDipole2)
+                {
+                    const scalar ir3 = 1/(r2*Foam::sqrt(r2));
+                    Fout[j] -=
+                        mj.p
+                      & ((kC*q[h]*ir3)*(symmTensor::I - 3*sqr(r)/r2));
+                }
+                pointMultipole mh(multipoles[h]);
+                mh.q = 0;
+                Mout[j] -= mj.p ^ (Eq + kC*mh.fieldOverK(x[j]));
+            }
+        }
     }
     if (Pstream::parRun())
     {
@@ -755,16 +1178,23 @@ void Foam::BemNearField<CloudType>::correct
         Pstream::listCombineScatter(M);
         Pstream::listCombineGather(P, plusEqOp<vector>());
         Pstream::listCombineScatter(P);
+        Pstream::listCombineGather(Fout, plusEqOp<vector>());
+        Pstream::listCombineScatter(Fout);
+        Pstream::listCombineGather(Mout, plusEqOp<vector>());
+        Pstream::listCombineScatter(Mout);
         reduce(stats_.gmresIterations, sumOp<label>());
         reduce(stats_.gmresResidual, maxOp<scalar>());
         reduce(stats_.energy, sumOp<scalar>());
         reduce(stats_.nSolved, sumOp<label>());
         reduce(remeshDelta, sumOp<scalar>());
-        allGatherBoundCharge(sigmaB);
+        allGatherBoundCharge(sigmaB, moments);
     }
     remeshOffset_ += remeshDelta;
     lastSigmaB_.swap(sigmaB);
+    lastMoments_.swap(moments);
+    trimCache();
     stats_.nShapes = returnReduce(label(shapeIndex_.size()), maxOp<label>());
+    reduce(stats_.cacheBytes, maxOp<scalar>());
     if (writeTime)
     {
         writeState();
@@ -785,6 +1215,11 @@ void Foam::BemNearField<CloudType>::correct
             p.tE() = (inContact ? w : 1)*M[g];
             p.dipole() = P[g];
         }
+        else
+        {
+            p.fE() += Fout[myStart + i];
+            p.tE() += Mout[myStart + i];
+        }
         ++i;
     }
     reduce(stats_.nInContact, sumOp<label>());
@@ -803,7 +1238,8 @@ void Foam::BemNearField<CloudType>::info() const
         << " (" << stats_.nInClusters << " parcels, largest "
         << stats_.maxClusterSize << "; " << stats_.nSolved << " solved), "
         << stats_.gmresIterations << " GMRES iterations (residual "
-        << stats_.gmresResidual << "), " << stats_.nShapes << " meshes" << nl;
+        << stats_.gmresResidual << "), " << stats_.nShapes << " meshes ("
+        << std::round(stats_.cacheBytes/1048576) << " MB)" << nl;
     if (this->contactWeight() != 1)
     {
         Info<< "    BEM members in contact (x chi^0.4) = "
@@ -811,7 +1247,8 @@ void Foam::BemNearField<CloudType>::info() const
     }
     Info<< "    BEM remeshing energy carried    = " << remeshOffset_ << nl;
     Info<< "    CPU time [s] since start        = dipoles " << dipoleTime_
-        << ", BEM clusters " << clusterTime_ << nl;
+        << ", BEM clusters " << clusterTime_ << " (set-up of meshes and"
+        << " blocks " << setupTime_ << ")" << nl;
 }
 
 

@@ -184,7 +184,7 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         return;
     }
 
-    rNear_ = rNearGiven_ > 0 ? rNearGiven_ : 2*dMax;
+    rNear_ = rNearFor(dMax);
     if (!(rNear_ >= dMax))
     {
         FatalIOErrorInFunction(this->dict())
