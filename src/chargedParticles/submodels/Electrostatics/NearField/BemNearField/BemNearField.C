@@ -232,6 +232,7 @@ void Foam::BemNearField<CloudType>::writeState() const
     List<scalarField> sigmaB(lastSigmaB_.size());
     vectorField dipoles(lastSigmaB_.size(), Zero);
     symmTensorField quadrupoles(lastSigmaB_.size(), Zero);
+    labelList hasMoments(lastSigmaB_.size(), 0);
     label k = 0;
     for (const auto& entry : lastSigmaB_)
     {
@@ -239,11 +240,12 @@ void Foam::BemNearField<CloudType>::writeState() const
         ids[2*k + 1] = entry.first.second();
         meshes[k] = entry.second.first;
         sigmaB[k] = entry.second.second;
-        const auto m = lastMoments_.find(entry.first);
-        if (m != lastMoments_.end())
+        const auto m = usedMoments_.find(entry.first);
+        if (m != usedMoments_.end())
         {
             dipoles[k] = m->second.first;
             quadrupoles[k] = m->second.second;
+            hasMoments[k] = 1;
         }
         ++k;
     }
@@ -251,6 +253,7 @@ void Foam::BemNearField<CloudType>::writeState() const
     state.add("ids", ids);
     state.add("meshes", meshes);
     state.add("sigmaB", sigmaB);
+    state.add("hasMoments", hasMoments);
     state.add("dipoles", dipoles);
     state.add("quadrupoles", quadrupoles);
     state.add("remeshOffset", remeshOffset_);
@@ -360,11 +363,18 @@ void Foam::BemNearField<CloudType>::readState()
             "quadrupoles", symmTensorField(meshes.size(), Zero)
         )
     );
+    const labelList hasMoments
+    (
+        state.lookupOrDefault("hasMoments", labelList(meshes.size(), 0))
+    );
     forAll(meshes, k)
     {
         const labelPair id(ids[2*k], ids[2*k + 1]);
         lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
-        lastMoments_.emplace(id, bodyMoments(dipoles[k], quadrupoles[k]));
+        if (hasMoments[k])
+        {
+            lastMoments_.emplace(id, bodyMoments(dipoles[k], quadrupoles[k]));
+        }
     }
 }
 
@@ -773,6 +783,7 @@ void Foam::BemNearField<CloudType>::correct
         stats_.nShapes = shapeIndex_.size();
         lastSigmaB_.clear();
         lastMoments_.clear();
+        usedMoments_.clear();
         if (writeTime)
         {
             writeState();
@@ -1191,6 +1202,7 @@ void Foam::BemNearField<CloudType>::correct
     }
     remeshOffset_ += remeshDelta;
     lastSigmaB_.swap(sigmaB);
+    usedMoments_.swap(lastMoments_);
     lastMoments_.swap(moments);
     trimCache();
     stats_.nShapes = returnReduce(label(shapeIndex_.size()), maxOp<label>());
