@@ -245,7 +245,9 @@ $PY "$tools/compareClouds.py" "$work/attraction5/0.0035" "$work/restart5/0.0035"
 
 # A conservative two-body run (e = 1, no friction): two oppositely charged
 # dielectric spheres (radius 100 um, epsilonR 10) released 0.5 R apart
-# attract, collide elastically and bounce. Kinetic + contact elastic +
+# attract, collide elastically and bounce; the same with a third charged
+# sphere near the pair (the energy of what cluster and neighbour see of
+# each other). Kinetic + contact elastic +
 # electrostatic energy (the log's books, the cluster's BEM energy Eq. 51
 # included) against its change, relative to the largest change of the
 # electrostatic energy: at the end of the run (after the bounce, 1e-3) and
@@ -254,21 +256,32 @@ $PY "$tools/compareClouds.py" "$work/attraction5/0.0035" "$work/restart5/0.0035"
 # forces' potential by a function of the gap (1.2e-3 at contact with the
 # default 1200 patches per parcel, reversible, halving the time step does
 # not change it), not by a secular drift.
-copyCase reducedStiffness "$work/energy"
+for bodies in 2 3
+do
+copyCase reducedStiffness "$work/energy$bodies"
 (
-    cd "$work/energy" || exit 1
+    cd "$work/energy$bodies" || exit 1
     cp=constant/cloudProperties
     sed -i -E 's/^( +youngsModulus +)1e9;/\11e7;/; s/^( +e +)0\.7;/\11;/; s/^( +mu +)0\.3;/\10;/' $cp
     sed -i -E 's/^( +stiffnessRatio .*)$/\1\n    epsilonR        10;/' $cp
     sed -i -E 's/^( +electrostaticsModel directCoulomb;)$/\1\n    directCoulombCoeffs { nearField { type bem; } }/' $cp
+    if [ $bodies = 3 ]
+    then
+        # A third charged sphere 1.5 R from both (outside the cluster,
+        # within rNear: multipoles both ways), in a taller box
+        sed -i -E 's|^( +\{ position \(250e-6 0 0\); d 2e-4; q -8.0425e-13; \})$|\1\n                { position (125e-6 330e-6 0); d 2e-4; q 4e-13; }|' $cp
+        sed -i -E 's/^( +\( *-?[0-9]+ +)(-?)300( +)(-?)300\)/\1\2600\3\4600)/' system/blockMeshDict
+    fi
     sed -i -E 's/^deltaT .*/deltaT          5e-7;/' system/controlDict
     setEndTime 2e-3
     setWriteInterval 4000
     run blockMesh blockMesh
-    run solver chargedParticleFoam || fail "bemClusters.energy (solver failed)"
-    $PY - <<'PYEOF'
+    run solver chargedParticleFoam || fail "bemClusters.energy$bodies (solver failed)"
+    $PY - $bodies <<'PYEOF'
 import re
+import sys
 import numpy as np
+bodies = int(sys.argv[1])
 log = open("log.solver").read()
 f = lambda key: np.array([float(v) for v in re.findall(key + r"\s*=\s*(\S+)", log)])
 U = f("Electrostatic energy")
@@ -281,10 +294,14 @@ drift = np.abs(E - E[0]).max()/dU
 final = abs(E[-1] - E[0])/dU
 contacts = len(re.findall(r"particle-particle\s*=\s*1,", log))
 bem = len(re.findall(r"BEM clusters\s*=\s*1 \(2 parcels", log))
-ok = final < 1e-3 and drift < 2e-3 and contacts > 0 and bem >= n - 1
-print("%s: bemClusters.energy (e = 1, mu = 0, 2 spheres epsilonR 10 through a contact: total energy"
-      " at the end %.2e of the electrostatic energy change %.3e J (tol 1e-3), largest %.2e (tol 2e-3);"
-      " %d steps in contact, %d of %d in a BEM cluster)"
-      % ("PASS" if ok else "FAIL", final, dU, drift, contacts, bem, n))
+parcels = re.findall(r"Current number of parcels\s*=\s*(\d+)", log)
+ok = (final < 1e-3 and drift < 2e-3 and contacts > 0 and bem >= n - 1
+      and parcels and int(parcels[-1]) == bodies)
+print("%s: bemClusters.energy%s (e = 1, mu = 0, %d spheres epsilonR 10, two through a contact%s:"
+      " total energy at the end %.2e of the electrostatic energy change %.3e J (tol 1e-3), largest"
+      " %.2e (tol 2e-3); %d steps in contact, %d of %d with the pair in a BEM cluster)"
+      % ("PASS" if ok else "FAIL", "" if bodies == 2 else "3", bodies,
+         "" if bodies == 2 else ", the third near them", final, dU, drift, contacts, bem, n))
 PYEOF
 )
+done

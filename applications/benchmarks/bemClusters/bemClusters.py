@@ -12,7 +12,9 @@ oppositely charged parcels attract and stick into aggregates, to t =
     far       cutoffCoulomb alone (point charges)
     dipoles   + nearField inducedDipole (defaults)
     bem       + nearField bem (defaults: clusterGap 1, 1200 patches per
-              parcel, isolated parcels: inducedDipole)
+              parcel, isolated parcels: inducedDipole, parcels near a
+              cluster: multipoles)
+    bem-pc    + nearField bem with neighbours pointCharges
     bem-gap2  + nearField bem with clusterGap 2
     bem-gap4  + nearField bem with clusterGap 4
     allBem    + nearField bem with clusterGap 1e6: every parcel in one
@@ -24,7 +26,8 @@ between its first and last logged step (start-up excluded) and split by
 the log's cumulative CPU times (contact, far field, dipoles, BEM clusters,
 rest); ratios are per round to the point-charge run, medians over rounds.
 
-Accuracy: one step of each rung from the formed state (fE, tE written);
+Accuracy: two steps of each rung from the formed state (fE, tE written;
+the first gives the clusters' members the multipoles their neighbours see);
 forces and torques against allBem's as relative RMS errors, for the
 parcels in the rung's clusters (the members written in the cloud's output
 properties) and for the others.
@@ -32,7 +35,7 @@ properties) and for the others.
     bemClusters.py [--n 300] [--phi 0.04] [--q 5e-11] [--form 0.2]
                    [--aspect 2] [--steps 20] [--all-steps 3] [--rounds 3]
                    [--rcut 0] [--runs dir] [--reuse] [--no-accuracy]
-                   [--no-cost]
+                   [--no-cost] [--bem-rungs bem,bem-pc,bem-gap2,bem-gap4]
 """
 import argparse
 import os
@@ -292,6 +295,7 @@ def parse_log(path):
 
 
 def main():
+    global B, BEM_RUNGS
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--n", type=int, default=300)
     ap.add_argument("--phi", type=float, default=0.04)
@@ -308,9 +312,14 @@ def main():
     ap.add_argument("--aspect", type=float, default=2,
                     help="a/b of the prolates (1: spheres, no free-charge quadrupole)")
     ap.add_argument("--runs", default=os.path.join(HERE, "runs"))
+    ap.add_argument("--bem-rungs", default=",".join(BEM_RUNGS),
+                    help="the cluster rungs to run, of " + " ".join(BEM_RUNGS))
     args = ap.parse_args()
-    global B
     B = A/args.aspect
+    BEM_RUNGS = tuple(r for r in args.bem_rungs.split(",") if r)
+    for r in BEM_RUNGS:
+        if r not in NEAR or r in ("far", "dipoles", "allBem"):
+            sys.exit(f"--bem-rungs: {r} is not one of " + " ".join(BEM_RUNGS))
 
     runs = os.path.abspath(args.runs)
     os.makedirs(runs, exist_ok=True)
@@ -356,7 +365,7 @@ def one_step_fields(case, t):
 
 
 def accuracy(base, runs, t0, rcut):
-    """One step of each rung from the formed state; forces and torques
+    """Two steps of each rung from the formed state; forces and torques
     against all-particle BEM, for the parcels in the clusters of each bem
     rung and for the isolated ones. Errors are relative RMS (sqrt of the
     summed squared differences over the summed squares of the reference):
@@ -373,7 +382,7 @@ def accuracy(base, runs, t0, rcut):
         assert np.array_equal(res[near][0], ids), f"{near}: parcels differ"
     F0, T0 = res["allBem"][1], res["allBem"][2]
     rms = lambda d, r: np.sqrt((d**2).sum()/(r**2).sum())
-    print(f"\nAccuracy against all-particle BEM, one step from the formed state "
+    print(f"\nAccuracy against all-particle BEM, second step from the formed state "
           f"({len(ids)} parcels; relative RMS errors):")
     print("| rung | parcels in its clusters | force error, in clusters | torque error, in clusters "
           "| force error, isolated | torque error, isolated |")

@@ -1072,6 +1072,16 @@ void Foam::BemNearField<CloudType>::correct
                     }
                     const label h = mem[m];
                     U += w*kC*(Um - q[h]*q[j]/mag(x[h] - x[j]));
+                    if (!member)
+                    {
+                        // The dipole solve's -1/2 p_j . E holds the
+                        // member's bound moments too (they induce p_j),
+                        // but the energy has no bound-bound term
+                        pointMultipole bh(multipoles[h]);
+                        bh.q = 0;
+                        bh.Q -= Qfree[h];
+                        U += 0.5*kC*(multipoles[j].p & bh.fieldOverK(x[j]));
+                    }
                 }
             }
             return U;
