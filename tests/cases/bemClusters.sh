@@ -107,30 +107,32 @@ PYEOF
 # prolate 1.2-3 b from a cluster of two, its multipoles at the members'
 # patches and the reaction, against all-particle BEM (and the far field's
 # point charges alone, neighbours pointCharges)
+neighbourCase()     # neighbourCase <dir> <variant>: bemNeighbours.py's scene
+{
+    copyCase twoChargedSpheres "$1"
+    (
+        cd "$1" || exit 1
+        sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
+        $PY "$tools/bemNeighbours.py" write . "$2"
+        setEndTime 1e-6
+        run blockMesh blockMesh
+    )
+}
 mkdir -p "$work/neighbours"
 for v in multipoles pointCharges allBem
 do
-    copyCase twoChargedSpheres "$work/neighbours/$v"
-    (
-        cd "$work/neighbours/$v" || exit 1
-        sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
-        $PY "$tools/bemNeighbours.py" write . $v
-        setEndTime 1e-6
-        run blockMesh blockMesh
-        run solver chargedParticleFoam
-    ) || fail "bemClusters.neighbours ($v failed)"
+    neighbourCase "$work/neighbours/$v" $v
+    (cd "$work/neighbours/$v" && run solver chargedParticleFoam) \
+        || fail "bemClusters.neighbours ($v failed)"
 done
 $PY "$tools/bemNeighbours.py" compare "$work/neighbours" | tee "$work/neighbours/table.md" \
     | grep -E '^(PASS|FAIL)'
 # The same on 2 processors: the reactions summed, the members' multipoles
 # shared (the second step uses them)
-copyCase twoChargedSpheres "$work/neighbours/parallel"
+neighbourCase "$work/neighbours/parallel" multipoles
 (
     cd "$work/neighbours/parallel" || exit 1
-    sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
-    $PY "$tools/bemNeighbours.py" write . multipoles
     setEndTime 2e-6
-    run blockMesh blockMesh
     run decomposePar decomposePar
     run solver mpirun -np 2 chargedParticleFoam -parallel
 ) || fail "bemClusters.neighbours.parallel (failed)"
@@ -141,14 +143,10 @@ copyCase twoChargedSpheres "$work/neighbours/parallel"
 ) || fail "bemClusters.neighbours.parallel (serial run failed)"
 # A restart after the first step (the members' multipoles in the state) =
 # the uninterrupted run
-copyCase twoChargedSpheres "$work/neighbours/restart"
+neighbourCase "$work/neighbours/restart" multipoles
 (
     cd "$work/neighbours/restart" || exit 1
-    sed -i 's/^scale   1e-3;/scale   5e-2;/' system/blockMeshDict
-    $PY "$tools/bemNeighbours.py" write . multipoles
-    setEndTime 1e-6
     setWriteInterval 1
-    run blockMesh blockMesh
     run solver chargedParticleFoam
     grep -q "quadrupoles" 1e-06/uniform/lagrangian/cloud/cloudOutputProperties \
         || fail "bemClusters.neighbours.restart (no multipoles in the state)"
