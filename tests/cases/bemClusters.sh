@@ -227,6 +227,36 @@ PYEOF
 )
 done
 
+# A mesh cache of 1 MB frees every mesh the step did not use (the pair's
+# grading follows the gap): the rebuilt meshes give the same run
+copyCase dielectricSpheres "$work/attractionCache"
+(
+    cd "$work/attractionCache" || exit 1
+    sed -i "s/type    inducedDipole;  \/\/ monopole + induced dipoles/type bem; meshCache 1;/" constant/cloudProperties
+    sed -i -E "s/^deltaT .*/deltaT          1e-5;/" system/controlDict
+    setEndTime 3.5e-3
+    setWriteInterval 175
+    run blockMesh blockMesh
+    run solver chargedParticleFoam || fail "bemClusters.meshCache (solver failed)"
+    $PY - <<'PYEOF'
+import re, sys
+import numpy as np
+sys.path.insert(0, ".")
+import attraction as A
+t, p1, p2, c = A.read_history(".")
+t0, q1, q2, c0 = A.read_history("../attraction1")
+n = min(len(t), len(t0))
+d = np.abs(p2[:n, c["x"]] - q2[:n, c0["x"]]).max()/A.a1
+count = lambda log: [int(m) for m in re.findall(r"BEM clusters .*, (\d+) meshes", open(log).read())]
+capped, uncapped = count("log.solver"), count("../attraction1/log.solver")
+# At most the old and new meshes of the two spheres in a remeshing step
+ok = n == len(t0) and d < 1e-12 and capped and max(capped) <= 4 < max(uncapped)
+print("%s: bemClusters.meshCache (meshCache 1 MB: at most %d meshes kept (tol 4), %d in the uncapped"
+      " run; the run differs by %.1e a1 in position, tol 1e-12)"
+      % ("PASS" if ok else "FAIL", max(capped) if capped else -1, max(uncapped), d))
+PYEOF
+)
+
 # Restart half-way (solveInterval 5, GMRES warm start: the bound charge is
 # in the written time's output properties) = the uninterrupted run
 (

@@ -162,6 +162,15 @@ void Foam::bemSolver::assemble()
 {
     const scalar t0 = now();
     const label np = particles_.size();
+    for (const particle& p : particles_)
+    {
+        if (!shapes_[p.shape])
+        {
+            FatalErrorInFunction
+                << "A particle's shape " << p.shape << " was released"
+                << exit(FatalError);
+        }
+    }
     offset_.setSize(np + 1);
     offset_[0] = 0;
     for (label p = 0; p < np; ++p)
@@ -183,8 +192,11 @@ void Foam::bemSolver::assemble()
     {
         if
         (
-            sd->nearFactor != ctrl_.nearFactor
-         || sd->nearQuad != ctrl_.nearQuadrature
+            sd
+         && (
+                sd->nearFactor != ctrl_.nearFactor
+             || sd->nearQuad != ctrl_.nearQuadrature
+            )
         )
         {
             buildNearBody(*sd);
@@ -793,7 +805,10 @@ Foam::bemSolver::controls& Foam::bemSolver::ctrl()
     assembled_ = false;
     for (auto& sd : shapes_)
     {
-        sd->lu.clear();
+        if (sd)
+        {
+            sd->lu.clear();
+        }
     }
     return ctrl_;
 }
@@ -883,10 +898,10 @@ Foam::label Foam::bemSolver::addParticle
     const scalarField& sigmaF
 )
 {
-    if (shapeI < 0 || shapeI >= label(shapes_.size()))
+    if (shapeI < 0 || shapeI >= label(shapes_.size()) || !shapes_[shapeI])
     {
         FatalErrorInFunction << "shape index " << shapeI << " out of range"
-            << exit(FatalError);
+            << " or released" << exit(FatalError);
     }
     if (!(kappaP >= 1) || !std::isfinite(kappaP))
     {
