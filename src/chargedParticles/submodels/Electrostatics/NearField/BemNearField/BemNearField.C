@@ -167,11 +167,17 @@ template<class CloudType>
 void Foam::BemNearField<CloudType>::trimCache()
 {
     const label now = this->owner().db().time().timeIndex();
-    std::vector<std::tuple<label, label, scalar>> unused;
-    scalar bytes = 0;
+    // Several keys can name one mesh (bemSolver::shape reuses an equal
+    // one, e.g. patch counts that round to the same even number)
+    std::set<label> live;
     for (const auto& entry : shapeIndex_)
     {
-        const label s = entry.second;
+        live.insert(entry.second);
+    }
+    std::vector<std::tuple<label, label, scalar>> unused;
+    scalar bytes = 0;
+    for (const label s : live)
+    {
         const scalar b = bem_->shapeBytes(s);
         bytes += b;
         if (shapeLastUse_[s] < now)
@@ -191,7 +197,10 @@ void Foam::BemNearField<CloudType>::trimCache()
             const label s = std::get<1>(u);
             bem_->releaseShape(s);
             bytes -= std::get<2>(u);
-            shapeIndex_.erase(shapeKeys_[s]);
+            for (auto it = shapeIndex_.begin(); it != shapeIndex_.end();)
+            {
+                it = it->second == s ? shapeIndex_.erase(it) : ++it;
+            }
             for (auto it = selfEnergy_.begin(); it != selfEnergy_.end();)
             {
                 it = it->first.first == s ? selfEnergy_.erase(it) : ++it;
@@ -199,6 +208,12 @@ void Foam::BemNearField<CloudType>::trimCache()
         }
     }
     stats_.cacheBytes = bytes;
+    live.clear();
+    for (const auto& entry : shapeIndex_)
+    {
+        live.insert(entry.second);
+    }
+    stats_.nShapes = live.size();
 }
 
 
@@ -780,7 +795,6 @@ void Foam::BemNearField<CloudType>::correct
     if (clusters.empty())
     {
         trimCache();
-        stats_.nShapes = shapeIndex_.size();
         lastSigmaB_.clear();
         lastMoments_.clear();
         usedMoments_.clear();
@@ -1215,7 +1229,7 @@ void Foam::BemNearField<CloudType>::correct
     usedMoments_.swap(lastMoments_);
     lastMoments_.swap(moments);
     trimCache();
-    stats_.nShapes = returnReduce(label(shapeIndex_.size()), maxOp<label>());
+    reduce(stats_.nShapes, maxOp<label>());
     reduce(stats_.cacheBytes, maxOp<scalar>());
     if (writeTime)
     {
