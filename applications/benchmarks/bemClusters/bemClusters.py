@@ -36,6 +36,7 @@ properties) and for the others.
                    [--aspect 2] [--steps 20] [--all-steps 3] [--rounds 3]
                    [--rcut 0] [--runs dir] [--reuse] [--no-accuracy]
                    [--no-cost] [--bem-rungs bem,bem-pc,bem-gap2,bem-gap4]
+                   [--acc-steps 2]
 """
 import argparse
 import os
@@ -295,7 +296,7 @@ def parse_log(path):
 
 
 def main():
-    global B, BEM_RUNGS
+    global B, BEM_RUNGS, ACC_STEPS
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--n", type=int, default=300)
     ap.add_argument("--phi", type=float, default=0.04)
@@ -312,10 +313,13 @@ def main():
     ap.add_argument("--aspect", type=float, default=2,
                     help="a/b of the prolates (1: spheres, no free-charge quadrupole)")
     ap.add_argument("--runs", default=os.path.join(HERE, "runs"))
+    ap.add_argument("--acc-steps", type=int, default=ACC_STEPS,
+                    help="accuracy: the forces of this step from the formed state")
     ap.add_argument("--bem-rungs", default=",".join(BEM_RUNGS),
                     help="the cluster rungs to run, of " + " ".join(BEM_RUNGS))
     args = ap.parse_args()
     B = A/args.aspect
+    ACC_STEPS = args.acc_steps
     BEM_RUNGS = tuple(r for r in args.bem_rungs.split(",") if r)
     for r in BEM_RUNGS:
         if r not in NEAR or r in ("far", "dipoles", "allBem"):
@@ -382,7 +386,7 @@ def accuracy(base, runs, t0, rcut):
         assert np.array_equal(res[near][0], ids), f"{near}: parcels differ"
     F0, T0 = res["allBem"][1], res["allBem"][2]
     rms = lambda d, r: np.sqrt((d**2).sum()/(r**2).sum())
-    print(f"\nAccuracy against all-particle BEM, second step from the formed state "
+    print(f"\nAccuracy against all-particle BEM, step {ACC_STEPS} from the formed state "
           f"({len(ids)} parcels; relative RMS errors):")
     print("| rung | parcels in its clusters | force error, in clusters | torque error, in clusters "
           "| force error, isolated | torque error, isolated |")
