@@ -85,8 +85,9 @@ PYEOF
 
 # A lone pair under directCoulomb: the far field's point-charge pair is
 # taken out of the cluster's external field, so the forces equal those
-# without a far field
-for far in none directCoulomb
+# without a far field; under cutoffCoulomb with rCut below the pair's
+# distance the far field has no pair, and nothing is taken out
+for far in none directCoulomb cutoffCoulomb
 do
     staticCase "$work/pair-$far" --far $far --pairs 1
     (cd "$work/pair-$far" && run solver chargedParticleFoam) || fail "bemClusters.farFieldPair ($far failed)"
@@ -97,9 +98,13 @@ import numpy as np
 work, top = sys.argv[1], sys.argv[2]
 sys.path.insert(0, top + "/etc/python")
 from foamLagrangian import read_field
-f = [read_field(f"{work}/pair-{m}/1e-06/lagrangian/cloud/fE").reshape(-1, 3) for m in ("none", "directCoulomb")]
+f = [read_field(f"{work}/pair-{m}/1e-06/lagrangian/cloud/fE").reshape(-1, 3)
+     for m in ("none", "directCoulomb", "cutoffCoulomb")]
 e = np.abs(f[0] - f[1]).max()/np.abs(f[0]).max()
 print("%s: bemClusters.farFieldPair (a lone pair: directCoulomb + bem vs bem alone:"
+      " force difference %.1e of the force, tol 1e-12)" % ("PASS" if e < 1e-12 else "FAIL", e))
+e = np.abs(f[0] - f[2]).max()/np.abs(f[0]).max()
+print("%s: bemClusters.cutoffPair (a lone pair beyond rCut: cutoffCoulomb + bem vs bem alone:"
       " force difference %.1e of the force, tol 1e-12)" % ("PASS" if e < 1e-12 else "FAIL", e))
 PYEOF
 

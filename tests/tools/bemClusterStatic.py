@@ -9,12 +9,14 @@ multipole series. Radii 50 um and ratio x 50 um, gaps 0.05-0.5 of the
 smaller radius, epsilonR 2, 10 and 1000, like and opposite charges.
 
   bemClusterStatic.py write <case> [--ratio 2] [--patches 1200]
-                            [--far none|directCoulomb] [--pairs N]
+                            [--far none|directCoulomb|cutoffCoulomb] [--pairs N]
   bemClusterStatic.py compare <case> [--ratio 2] [--tol005 0.02] [--tol01 0.01]
       -> markdown table, PASS/FAIL line
 
 --far directCoulomb: the far field counts the pair's point charges, which
-the cluster must take out again; --pairs N: only the first N pairs.
+the cluster must take out again; --far cutoffCoulomb (rCut 1e-4 m, below
+every pair's distance): it does not, and the cluster must not either;
+--pairs N: only the first N pairs.
 
 The error is |F_bem - F_exact| over max(|F_exact|, |F_Coulomb|): like
 charges of unequal size attract at close range, and where the Coulomb
@@ -76,6 +78,11 @@ def write(case, A2, n=1200, far="none", nPairs=None):
                          % (x[0], x[1], x[2], 2*a, k, q))
     open(os.path.join(case, "constant/cloudProperties"), "w").write(
         heldCloud.cloudProperties(ELECTROSTATICS % (far, far, n), "\n".join(lines)))
+    if far == "cutoffCoulomb":
+        # A cutoff below every pair's distance: the far field has no pair
+        p = os.path.join(case, "constant/cloudProperties")
+        text = open(p).read().replace("cutoffCoulombCoeffs {", "cutoffCoulombCoeffs { rCut 1e-4;")
+        open(p, "w").write(text)
 
 
 def compare(case, A2, tol005=0.02, tol01=0.01):
