@@ -1049,11 +1049,17 @@ void Foam::BemNearField<CloudType>::correct
                 U -= 0.5*(bem_->boundDipole(m) & Eext[m]);
             }
             // The neighbours (linear media: 1/2 sum of free charge x
-            // potential): with f the free and b the bound charges,
+            // potential, Jackson, Classical Electrodynamics, Sec. 4.7):
+            // with f the free and b the bound charges,
             // U(fA, fj) + 1/2 U(fA, bj) + 1/2 U(bA, fj), less the far
             // field's point-charge pairs. An isolated parcel's dipole
             // has its 1/2 U(bj, A) in the dipole solve's energy; a pair
             // of clusters is counted half from each side
+            List<scalarField> cMem(mem.size());
+            forAll(mem, m)
+            {
+                cMem[m] = bem_->mediumCharges(m);
+            }
             for (const label j : nbrs)
             {
                 const bool member = clusterOf[j] >= 0;
@@ -1071,7 +1077,7 @@ void Foam::BemNearField<CloudType>::correct
                 {
                     const scalarField& a = bem_->mesh(meshes[m]).areas();
                     const scalarField& sf = bem_->sigmaF(m);
-                    const scalarField c(bem_->mediumCharges(m));
+                    const scalarField& c = cMem[m];
                     const SubList<point> y(bem_->centres(m));
                     scalar Um = 0;
                     forAll(c, k)
@@ -1168,6 +1174,11 @@ void Foam::BemNearField<CloudType>::correct
         // place of the far field's point-charge pair force, the dipole
         // solve's dipole-charge pair force and the torque p x E of what
         // their E holds of the members
+        List<scalarField> cMem(mem.size());
+        forAll(mem, m)
+        {
+            cMem[m] = bem_->mediumCharges(m);
+        }
         for (const label j : nbrs)
         {
             if (clusterOf[j] >= 0)
@@ -1177,7 +1188,7 @@ void Foam::BemNearField<CloudType>::correct
             const pointMultipole& mj = multipoles[j];
             forAll(mem, m)
             {
-                const scalarField c(bem_->mediumCharges(m));
+                const scalarField& c = cMem[m];
                 const SubList<point> y(bem_->centres(m));
                 forAll(c, k)
                 {
