@@ -121,6 +121,8 @@ badCase negativeTrackingTolerance 'maxCo +0.3;' 'maxCo 0.3; trackingTolerance -1
     'Entry trackingTolerance = -0.001 is out of range \[0, 0.5\]'
 badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
     'Entry logInterval = 0 is out of range: >= 1'
+badCase unknownMomentumCoupling 'maxCo +0.3;' 'maxCo 0.3; momentumCoupling implicit;' \
+    'Entry momentumCoupling = implicit is not one of: conservativeImplicit'
 badCase zeroNeighbourSkin 'maxInteractionDistance +4e-3;' \
     'maxInteractionDistance 4e-3; neighbourSkin 0;' \
     'Entry neighbourSkin = 0 is out of range \(0, maxInteractionDistance = 0.004\]'

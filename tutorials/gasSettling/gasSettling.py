@@ -13,8 +13,8 @@ column (x < 5 mm) is < 0 and in the other half > 0.
 --momentum U0 TOL (fully periodic box, no gravity, all parcels injected
 with velocity U0 = 'ux uy uz'): the momentum the particles lost is found in
 the gas: |P_gas + P_p - P_p0| <= TOL |P_p0 - P_p| with
-P_gas = sum rho_c alpha_c U_c V (cells), P_p from the log (cloud info),
-P_p0 = N n m U0.
+P_gas = sum rho_c alpha_c U_c V (cells), P_p = sum n m U of the parcels
+written at that time, P_p0 = N n m U0.
 """
 import argparse
 import glob
@@ -23,6 +23,8 @@ import os
 import re
 
 import numpy as np
+
+from foamLagrangian import read_field
 
 
 def internal_field(path):
@@ -91,10 +93,12 @@ else:
     nParticle = float(re.search(r"nParticle\s+([-+0-9.eE]+)", cp).group(1))
     d = float(re.search(r"value\s+([-+0-9.eE]+)", cp).group(1))
     P0 = nInj*nParticle*rho0*math.pi/6*d**3*U0
-    # The cloud info of the step that ends at t
-    blocks = re.split(r"\nTime = ", log)
-    blk = [b for b in blocks if re.match(r"%s\s" % re.escape(t), b)][-1]
-    Pp = vec(re.search(r"Linear momentum\s*=\s*(\([^)]*\))", blk).group(1))
+    # The parcels as written at t (after the step's coupling correction)
+    lag = os.path.join(t, "lagrangian", "cloud")
+    mp = (read_field(os.path.join(lag, "nParticle"))
+          * read_field(os.path.join(lag, "rho"))
+          * math.pi/6*read_field(os.path.join(lag, "d"))**3)
+    Pp = np.sum(mp[:, None]*read_field(os.path.join(lag, "U")), axis=0)
     Pg = rho*np.sum((alpha*V)[:, None]*U, axis=0)
     lost = P0 - Pp
     err = float(np.linalg.norm(Pg - lost)/np.linalg.norm(lost))

@@ -12,8 +12,12 @@ Description
     (v1912) with the charged cloud. The incompressible continuous phase is
     solved by PIMPLE with its volume fraction alphac = 1 - theta from the
     cloud and the two-way momentum exchange of the cloud's coupled forces
-    (drag, pressure gradient, ...: cloudSU, cloudVolSUSu), exactly as
-    DPMFoam does: its UcEqn.H and pEqn.H are included as they are.
+    (drag, pressure gradient, ...: cloudSU, cloudVolSUSu), as DPMFoam does:
+    its UcEqn.H and pEqn.H are included as they are. With the cloud's
+    solution/momentumCoupling conservativeImplicit, cloudSU is implicit in
+    the drag and the parcels get their share of the carrier's velocity
+    change after the PIMPLE loop (correctCoupling): the momentum one phase
+    gains is the other's loss.
 
     The cloud (constant/<cloud>Properties, -cloud option, default 'cloud')
     is the basicChargedCloud of chargedParticleFoam: electrostatics,
@@ -121,6 +125,10 @@ int main(int argc, char *argv[])
                 continuousPhaseTurbulence->correct();
             }
         }
+
+        // The parcels' share of the implicit drag (momentumCoupling
+        // conservativeImplicit; nothing with OpenFOAM's source terms)
+        parcels.correctCoupling(Uc);
 
         runTime.write();
 

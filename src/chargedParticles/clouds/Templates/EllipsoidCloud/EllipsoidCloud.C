@@ -7,6 +7,8 @@
 #include "CollisionModel.H"
 #include "EllipsoidCollision.H"
 #include "subCycleTime.H"
+#include "fvMatrices.H"
+#include "fvmSup.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -95,8 +97,54 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     ),
     gatherer_(nullptr),
     kickInMove_(false),
-    contactTime_(0)
+    contactTime_(0),
+    conservativeCoupling_(false)
 {
+    if (this->solution().active())
+    {
+        const dictionary& solDict = this->solution().dict();
+        const word coupling
+        (
+            solDict.template lookupOrDefault<word>
+            (
+                "momentumCoupling",
+                "sourceTerms"
+            )
+        );
+        if (coupling == "conservativeImplicit")
+        {
+            conservativeCoupling_ = this->solution().coupled();
+        }
+        else if (coupling != "sourceTerms")
+        {
+            FatalIOErrorInFunction(solDict)
+                << "Entry momentumCoupling = " << coupling << " is not one"
+                << " of: conservativeImplicit (drag implicit and momentum"
+                << " conserved on both sides), sourceTerms (OpenFOAM's"
+                << " sourceTerms/schemes/U)" << exit(FatalIOError);
+        }
+        if (conservativeCoupling_)
+        {
+            if (this->solution().steadyState())
+            {
+                FatalIOErrorInFunction(solDict)
+                    << "Entry momentumCoupling = conservativeImplicit needs"
+                    << " a transient cloud (transient yes)"
+                    << exit(FatalIOError);
+            }
+            const scalar relax = this->solution().relaxCoeff("U");
+            if (relax != 1)
+            {
+                FatalIOErrorInFunction(solDict)
+                    << "Entry sourceTerms/schemes/U has the relaxation "
+                    << relax << "; momentumCoupling conservativeImplicit"
+                    << " needs 1 (a relaxed source does not conserve"
+                    << " momentum)" << exit(FatalIOError);
+            }
+            Info<< "    Momentum coupling: conservativeImplicit" << endl;
+        }
+    }
+
     if (logInterval_ < 1)
     {
         FatalIOErrorInFunction(this->solution().dict())
@@ -153,7 +201,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
-    contactTime_(0)
+    contactTime_(0),
+    conservativeCoupling_(c.conservativeCoupling_)
 {}
 
 
@@ -171,7 +220,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
-    contactTime_(0)
+    contactTime_(0),
+    conservativeCoupling_(c.conservativeCoupling_)
 {}
 
 
@@ -252,6 +302,117 @@ void Foam::EllipsoidCloud<CloudType>::evolve()
 
         this->solve(*this, td);
     }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::postEvolve()
+{
+    if (conservativeCoupling_)
+    {
+        // The velocity response of each parcel to its carrier velocity over
+        // the step, from the coupled forces at the end of the step (their
+        // cached fields are released by the base's postEvolve)
+        const scalar dt = this->db().time().deltaTValue();
+        typename parcelType::trackingData td(*this);
+        couplingResponse_.clear();
+        couplingCoeff_.setSize(this->mesh().nCells());
+        couplingCoeff_ = 0;
+        for (parcelType& p : *this)
+        {
+            p.setCellValues(*this, td);
+            const scalar mass = p.mass();
+            const forceSuSp Fcp =
+                this->forces().calcCoupled
+                (
+                    p, td, dt, mass, p.Re(td), td.muc()
+                );
+            const scalar massEff = this->forces().massEff(p, td, mass);
+            const scalar beta = Fcp.Sp()/massEff;
+
+            // dU/du = beta dtEff: the U integration scheme's response of
+            // dU/dt = beta (u - U) + a to u (Euler: beta dt/(1 + beta dt),
+            // analytical: 1 - exp(-beta dt))
+            const scalar f =
+                beta*dt > SMALL
+              ? beta*this->UIntegrator().dtEff(dt, beta)
+              : beta*dt;
+            couplingResponse_.append(f);
+            couplingCoeff_[p.cell()] += p.nParticle()*massEff*f;
+        }
+    }
+
+    CloudType::postEvolve();
+}
+
+
+template<class CloudType>
+Foam::tmp<Foam::fvVectorMatrix>
+Foam::EllipsoidCloud<CloudType>::SU(volVectorField& U)
+{
+    if (!conservativeCoupling_)
+    {
+        return CloudType::SU(U);
+    }
+
+    if (couplingCoeff_.size() != this->mesh().nCells())
+    {
+        // Not evolved yet (SU before the first evolve)
+        couplingCoeff_.setSize(this->mesh().nCells(), 0);
+    }
+    couplingU0_ = U.primitiveField();
+
+    const volScalarField::Internal Vdt
+    (
+        this->mesh().V()*this->db().time().deltaT()
+    );
+    volScalarField::Internal C
+    (
+        IOobject
+        (
+            this->name() + ":couplingCoeff",
+            this->db().time().timeName(),
+            this->mesh()
+        ),
+        this->mesh(),
+        dimensionedScalar(dimMass, Zero)
+    );
+    C.field() = couplingCoeff_;
+
+    // The carrier gains UTrans (taken by the parcels at U0) and
+    // -C (U - U0): the parcels get +C (U - U0) in correctCoupling
+    return this->UTrans()/Vdt - fvm::Sp(C/Vdt, U) + C/Vdt*U;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::correctCoupling(const volVectorField& U)
+{
+    if (!conservativeCoupling_)
+    {
+        return;
+    }
+    if
+    (
+        couplingResponse_.size() != this->size()
+     || couplingU0_.size() != U.size()
+    )
+    {
+        FatalErrorInFunction
+            << "correctCoupling for " << this->size() << " parcels with "
+            << couplingResponse_.size() << " responses and "
+            << couplingU0_.size() << " old carrier velocities: the solver"
+            << " must call SU(U) after evolve() and before correctCoupling"
+            << abort(FatalError);
+    }
+
+    label i = 0;
+    for (parcelType& p : *this)
+    {
+        const label celli = p.cell();
+        p.U() += couplingResponse_[i++]*(U[celli] - couplingU0_[celli]);
+    }
+    couplingResponse_.clear();
 }
 
 
