@@ -11,6 +11,8 @@
 #    downwards: the momentum the particles lose is in the gas (see the
 #    tolerances below), with DPMFoam's explicit source and with
 #    momentumCoupling conservativeImplicit
+#  - a uniform suspension settling in a closed box: the walls' pressure
+#    carries its weight
 . "$(dirname "$0")/common.sh.inc"
 export PYTHONPATH="$top/etc/python${PYTHONPATH:+:$PYTHONPATH}"
 
@@ -58,51 +60,80 @@ copyCase gasSettling "$work/closed"
 grep -E '^(PASS|FAIL): ' "$work/closed/results.txt" | sed 's/gasSettling\./gasCoupled.closed./'
 
 # -- Momentum exchange in a fully periodic box, no gravity --
-# With the explicit source (sourceTerms U explicit 1) the gas receives each
-# step exactly the momentum the coupled forces took from the particles
-# (UTrans/dt). What remains: DPMFoam's momentum equation is
-# alpha_c DU_c/Dt, not d(alpha_c U_c)/dt (the ddt(alpha_c) U_c terms are
-# O(alpha_p) = 1e-3 here), the source reaches U_c through the flux
-# reconstruction of the pressure equation, and solver tolerances: measured
-# 4e-4, tolerance 5e-3. (DPMFoam's semiImplicit source, the tutorial's
-# default, adds UCoeff (U_c,old - U_c,new)/dt, which the particles never
-# see: not conservative, 11 % here with dt/tau_p ~ 1/40 and mass loading 1.7.)
-copyCase gasSettling "$work/periodic"
-cd "$work/periodic" || exit 1
-cp system/blockMeshDict.periodic system/blockMeshDict
-sed -i -E 's/^value .*/value           (0 0 0);/' constant/g
-sed -i -E 's/^( *U0 +).*/\1(0 0 -0.3);/' constant/cloudProperties
-sed -i -E 's/^( *U +)semiImplicit 1;/\1explicit 1;/' constant/cloudProperties
-$PY makePositions.py
-run blockMesh blockMesh \
-    && run chargedDPMFoam chargedDPMFoam \
-    && run postProcess.C postProcess -func writeCellCentres -latestTime \
-    && run postProcess.V postProcess -func writeCellVolumes -latestTime \
-    || fail "gasCoupled.periodic.run (a step failed; see $work/periodic/log.*)"
+# With DPMFoam's explicit source (momentumCoupling sourceTerms, sourceTerms
+# U explicit 1) the gas receives each step exactly the momentum the coupled
+# forces took from the particles (UTrans/dt). What remains: DPMFoam's
+# momentum equation is alpha_c DU_c/Dt, not d(alpha_c U_c)/dt (the
+# ddt(alpha_c) U_c terms are O(alpha_p) = 1e-3 here), the source reaches U_c
+# through the flux reconstruction of the pressure equation, and solver
+# tolerances: measured 4e-4, tolerance 5e-3. (DPMFoam's semiImplicit source
+# adds UCoeff (U_c,old - U_c,new)/dt, which the particles never see: not
+# conservative, 11 % here with dt/tau_p ~ 1/40 and mass loading 1.7.)
+periodicBox()    # periodicBox <name> <U scheme> <momentumCoupling>
+{
+    copyCase gasSettling "$work/$1"
+    cd "$work/$1" || exit 1
+    cp system/blockMeshDict.periodic system/blockMeshDict
+    sed -i -E 's/^value .*/value           (0 0 0);/' constant/g
+    sed -i -E 's/^( *U0 +).*/\1(0 0 -0.3);/' constant/cloudProperties
+    sed -i -E "s/^( *U +)semiImplicit 1;/\1$2 1;/" constant/cloudProperties
+    sed -i -E "s/^( *momentumCoupling +).*/\1$3;/" constant/cloudProperties
+    $PY makePositions.py
+    run blockMesh blockMesh \
+        && run chargedDPMFoam chargedDPMFoam \
+        && run postProcess.C postProcess -func writeCellCentres -latestTime \
+        && run postProcess.V postProcess -func writeCellVolumes -latestTime \
+        || fail "gasCoupled.$1.run (a step failed; see $work/$1/log.*)"
+}
+periodicBox periodic explicit sourceTerms
 $PY gasSettling.py . --momentum "(0 0 -0.3)" 5e-3 | sed 's/gasSettling\./gasCoupled.periodic./'
 
-# -- The same box with momentumCoupling conservativeImplicit --
+# -- The same box with momentumCoupling conservativeImplicit (the tutorial's) --
 # The drag implicit on both sides with one coefficient, the conservative
 # form of the gas momentum equation and the cloud's force on faces as
 # rAUcf (interpolated force).Sf: measured 7e-5 (PISO's lagged neighbour
 # velocities and the solver tolerances), tolerance 5e-4 (DPMFoam's
 # explicit source above: 4e-4). The exact balance on uniform fields, for
 # mass loadings 0.1-30 and dt/tau_p 0.01-10, is test momentumCoupling.
-copyCase gasSettling "$work/periodicConservative"
-cd "$work/periodicConservative" || exit 1
-cp system/blockMeshDict.periodic system/blockMeshDict
-sed -i -E 's/^value .*/value           (0 0 0);/' constant/g
-sed -i -E 's/^( *U0 +).*/\1(0 0 -0.3);/' constant/cloudProperties
-sed -i -E 's/^( *transient +yes;)/\1\n    momentumCoupling conservativeImplicit;/' constant/cloudProperties
-$PY makePositions.py
-run blockMesh blockMesh \
-    && run chargedDPMFoam chargedDPMFoam \
-    && run postProcess.C postProcess -func writeCellCentres -latestTime \
-    && run postProcess.V postProcess -func writeCellVolumes -latestTime \
-    || fail "gasCoupled.periodicConservative.run (a step failed; see $work/periodicConservative/log.*)"
+check gasCoupled.tutorialCoupling "(gasSettling sets momentumCoupling conservativeImplicit)" \
+    grep -q "momentumCoupling conservativeImplicit;" "$top/tutorials/gasSettling/constant/cloudProperties"
+periodicBox periodicConservative semiImplicit conservativeImplicit
 check gasCoupled.periodicConservative.selected "(the log names the scheme)" \
     grep -q "Momentum coupling: conservativeImplicit" log.chargedDPMFoam
 $PY gasSettling.py . --momentum "(0 0 -0.3)" 5e-4 | sed 's/gasSettling\./gasCoupled.periodicConservative./'
+
+# -- A suspension settling in a closed box (conservativeImplicit) --
+# Periodic sides, walls at the bottom and top; 512 parcels of 20 um
+# spheres (nParticle 224, mass loading 1 where they are) on the cell
+# centres of the middle 8 of 16 layers, so every layer is uniform (a random
+# suspension convects). After 0.03 s (10 tau_p, the parcels at their
+# terminal velocity, none near a wall) the walls' pressure carries the
+# weight of gas and particles: measured 3.2e-4 (what is left of the
+# acceleration, e^-10), tolerance 1e-3.
+copyCase gasSettling "$work/suspension"
+cd "$work/suspension" || exit 1
+$PY - <<'PYEOF'
+import re
+p = "system/blockMeshDict"
+s = open(p + ".periodic").read()
+s, n = re.subn(r"    bottom \{.*\n    top +\{.*\n",
+               "    walls  { type wall; faces ((0 3 2 1) (4 5 6 7)); }\n", s)
+assert n == 1
+open(p, "w").write(s)
+PYEOF
+grep -q "momentumCoupling conservativeImplicit;" constant/cloudProperties \
+    || fail "gasCoupled.tutorialCoupling (gasSettling does not set momentumCoupling conservativeImplicit)"
+sed -i -E 's/^( *shape +).*/\1(1 1 1);/; s/^( *value +)8e-5;/\12e-5;/; s/^( *nParticle +).*/\1224;/' constant/cloudProperties
+setEndTime 0.03
+sed -i -E 's/^deltaT .*/deltaT          1e-4;/' system/controlDict
+setWriteInterval 300
+$PY makePositions.py --box 0 10e-3 0 10e-3 5e-3 15e-3 --lattice 8 8 8
+run blockMesh blockMesh \
+    && run chargedDPMFoam chargedDPMFoam \
+    && run postProcess.gradp postProcess -func "grad(p)" -latestTime \
+    && run postProcess.V postProcess -func writeCellVolumes -latestTime \
+    || fail "gasCoupled.suspension.run (a step failed; see $work/suspension/log.*)"
+$PY gasSettling.py . --weight 1e-3 | sed 's/gasSettling\./gasCoupled.suspension./'
 
 # -- Bad input: alphaMax out of (0, 1) stops the run naming the entry --
 copyCase gasSettling "$work/badAlphaMax"

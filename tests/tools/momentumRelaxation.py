@@ -91,7 +91,7 @@ cp = os.path.join(case, "constant", "cloudProperties")
 sub(cp, r"^(\s*)gravity;\s*$\n", "")
 sub(cp, r"^(\s*shape\s+).*;", r"\1(1 1 1);")
 sub(cp, r"^(\s*value\s+)8e-5;", rf"\g<1>{d};")
-sub(cp, r"^(\s*transient\s+yes;)", r"\1\n    momentumCoupling sourceTerms;")
+sub(cp, r"^(\s*momentumCoupling\s+).*;", r"\1sourceTerms;")
 with open(os.path.join(case, "constant", "cloudPositions"), "w") as f:
     f.write("FoamFile\n{\n    version 2.0;\n    format ascii;\n"
             "    class vectorField;\n    object cloudPositions;\n}\n\n8\n(\n")

@@ -97,7 +97,10 @@ def summary(case):
     b = balance(case)
     last = q[-1]
     qSat = case_params(case)["qSat"]
+    U = read_field(os.path.join(case, ts[-1], "lagrangian", "cloud", "U"))
     return ts, q, b, {
+        "U": U.mean(axis=0),
+        "UxStd": U[:, 0].std(),
         "qSat": qSat,
         "time": float(ts[-1]),
         "parcels": len(last),
@@ -126,6 +129,8 @@ def main():
           f"{s['mean']:.4f}, std {s['std']:.4f}")
     print(f"  charge balance (parcels + walls) / max |parcel charge| <= "
           f"{s['balance']:.1e}; charging wall contacts {s['wallContacts']:.0f}")
+    print(f"  parcel velocity: mean {np.array2string(s['U'], precision=4)} m/s,"
+          f" std of U_x {s['UxStd']:.4f} m/s")
 
     # Charge build-up
     fig, ax = plt.subplots(figsize=(6, 4))
@@ -156,6 +161,11 @@ def main():
         print(f"  difference of the means: {abs(so['mean'] - s['mean']):.4f}"
               f" (standard error of a mean "
               f"{np.hypot(s['std'], so['std'])/np.sqrt(s['parcels']):.4f})")
+        print(f"  {other}: parcel velocity: mean"
+              f" {np.array2string(so['U'], precision=4)} m/s, std of U_x"
+              f" {so['UxStd']:.4f} m/s; difference of the mean U_x"
+              f" {abs(so['U'][0] - s['U'][0]):.4f} m/s (standard error"
+              f" {np.hypot(s['UxStd'], so['UxStd'])/np.sqrt(s['parcels']):.4f})")
     ax.set_xlabel("q / q_sat")
     ax.set_ylabel("parcels")
     ax.legend()

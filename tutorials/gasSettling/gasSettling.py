@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks of a gasSettling run (chargedDPMFoam), one PASS:/FAIL: line each.
 
-    gasSettling.py <case> [--momentum U0 TOL]
+    gasSettling.py <case> [--momentum U0 TOL | --weight TOL]
 
 Always: the run ended, no NaN in the log, no parcel lost (the log's parcel
 count at the end equals the number of positions injected).
@@ -15,6 +15,12 @@ with velocity U0 = 'ux uy uz'): the momentum the particles lost is found in
 the gas: |P_gas + P_p - P_p0| <= TOL |P_p0 - P_p| with
 P_gas = sum rho_c alpha_c U_c V (cells), P_p = sum n m U of the parcels
 written at that time, P_p0 = N n m U0.
+
+--weight TOL (closed box, gravity, a suspension settling at its terminal
+velocity, no parcel at a wall): the walls' pressure carries the weight of
+the gas and the particles, -rho_c sum V grad(p) (Gauss gradient of the
+kinematic p: the walls' pressure force) = -(rho_c (V_box - V_p) + M_p) g
+within TOL of the weight (needs grad(p) and V written at the last time).
 """
 import argparse
 import glob
@@ -49,6 +55,7 @@ def vec(s):
 ap = argparse.ArgumentParser(description=__doc__)
 ap.add_argument("case")
 ap.add_argument("--momentum", nargs=2, metavar=("U0", "TOL"))
+ap.add_argument("--weight", type=float, metavar="TOL")
 a = ap.parse_args()
 os.chdir(a.case)
 
@@ -70,14 +77,30 @@ if not times:
     raise SystemExit(1)
 t = times[-1]
 U = internal_field(os.path.join(t, "U.air"))
-C = internal_field(os.path.join(t, "C"))
 V = internal_field(os.path.join(t, "V"))
 alpha = internal_field(os.path.join(t, "alpha.air"))
 rho = float(re.search(r"rho.air\s+([-+0-9.eE]+)",
                       open("constant/transportProperties").read()).group(1))
 finite = bool(np.all(np.isfinite(U)))
 
-if a.momentum is None:
+if a.weight is not None:
+    g = vec(re.search(r"value\s+(\([^)]*\))", open("constant/g").read()).group(1))
+    lag = os.path.join(t, "lagrangian", "cloud")
+    vp = (read_field(os.path.join(lag, "nParticle"))
+          * math.pi/6*read_field(os.path.join(lag, "d"))**3)
+    Vp = float(np.sum(vp))
+    Mp = float(np.sum(vp*read_field(os.path.join(lag, "rho"))))
+    F = -rho*np.sum(V[:, None]*internal_field(os.path.join(t, "grad(p)")), axis=0)
+    W = -(rho*(float(np.sum(V)) - Vp) + Mp)*g
+    err = float(np.linalg.norm(F - W)/np.linalg.norm(W))
+    print(("PASS" if finite and err <= a.weight else "FAIL")
+          + f": gasSettling.weight (t = {t} s: walls' pressure force"
+          f" {np.array2string(F, precision=5)} N, weight of gas and particles"
+          f" {np.array2string(W + 0.0, precision=5)} N (particles"
+          f" {Mp*float(np.linalg.norm(g)):.4g} N); relative difference"
+          f" {err:.3g} <= {a.weight})")
+elif a.momentum is None:
+    C = internal_field(os.path.join(t, "C"))
     left = C[:, 0] < 5e-3
     wLeft = float(np.average(U[left, 2], weights=V[left]))
     wRight = float(np.average(U[~left, 2], weights=V[~left]))

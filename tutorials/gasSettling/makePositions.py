@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Write constant/cloudPositions: N random parcel positions (fixed seed) in
 the box  x0 < x < x1, y0 < y < y1, z0 < z < z1  [m], no two closer than
-dmin (rejection sampling; default 0: independent points).
+dmin (rejection sampling; default 0: independent points); or with
+--lattice NX NY NZ the centres of an NX x NY x NZ division of the box.
 
     makePositions.py [--n 300] [--box x0 x1 y0 y1 z0 z1] [--dmin D]
+                     [--lattice NX NY NZ]
 """
 import argparse
 
@@ -14,12 +16,19 @@ ap.add_argument("--n", type=int, default=300)
 ap.add_argument("--box", type=float, nargs=6,
                 default=[0.5e-3, 4.5e-3, 0.5e-3, 9.5e-3, 10e-3, 18e-3])
 ap.add_argument("--dmin", type=float, default=0)
+ap.add_argument("--lattice", type=int, nargs=3)
 ap.add_argument("--out", default="constant/cloudPositions")
 a = ap.parse_args()
 
 rng = np.random.default_rng(20080625)
 lo, hi = np.array(a.box[0::2]), np.array(a.box[1::2])
-if a.dmin > 0:
+if a.lattice:
+    n = np.array(a.lattice)
+    ijk = np.stack(np.meshgrid(*[np.arange(k) for k in n], indexing="ij"),
+                   axis=-1).reshape(-1, 3)
+    x = lo + (ijk + 0.5)*(hi - lo)/n
+    a.n = len(x)
+elif a.dmin > 0:
     x = np.empty((a.n, 3))
     n, tries = 0, 0
     while n < a.n:
