@@ -1,4 +1,4 @@
-# Gas coupling (issue 6): the orientation-dependent ellipsoid drag and the
+# Gas coupling: the orientation-dependent ellipsoid drag and the
 # gas-coupled solver chargedDPMFoam.
 #  - ellipsoidSettling (chargedParticleFoam, quiescent carrier): terminal
 #    velocities of a sphere and four ellipsoids (broadside, end-on, tilted,

@@ -1,4 +1,4 @@
-# Gas-particle momentum coupling (issue 25): two-velocity relaxation in a
+# Gas-particle momentum coupling: two-velocity relaxation in a
 # fully periodic box with uniform fields (tests/tools/momentumRelaxation.py
 # has the set-up), gas moving and particles at rest and the reverse, mass
 # loadings 0.1, 1, 10, 30 and dt/tau_p 0.01, 0.1, 1, 10, against the exact

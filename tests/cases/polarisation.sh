@@ -20,6 +20,16 @@ do
     ) || fail "polarisation.static.$config (run failed, see $work/static-$config)"
 done
 
+# bemElectrostatics with an absolute outputDir writes there (not under the
+# case), with the same numbers as the relative default
+(
+    cd "$work/static-spheres" || exit 1
+    sed -i -E "s|^outputDir .*;|outputDir \"$work/bemAbsolute\";|" system/bemElectrostaticsDict
+    run bemElectrostaticsAbsolute bemElectrostatics
+    check polarisation.absoluteOutputDir "(inducedDipole.dat in $work/bemAbsolute, equal to the case's)" \
+        cmp -s "$work/bemAbsolute/inducedDipole.dat" postProcessing/bemElectrostatics/inducedDipole.dat
+)
+
 copyCase dielectricLibration "$work/libration"
 (
     cd "$work/libration" || exit 1

@@ -29,3 +29,16 @@ check twoChargedSpheres.energy "(max relative drift of KE + U_el: $drift)" \
 check twoChargedSpheres.plot "(separation.png written)" test -s separation.png
 check twoChargedSpheres.fields "(q and fE written as lagrangian fields)" \
     test -s 0.0059/lagrangian/cloud/q -a -s 0.0059/lagrangian/cloud/fE
+
+# Progress in the log: a line at every tenth of the run, the last at 100 %
+# with the simulated and end times
+check twoChargedSpheres.progress "(10 progress lines, the last 'Progress: 100 % (t = 0.0059 s of 0.0059 s)')" \
+    $PY - <<'PYEOF'
+import re, sys
+lines = re.findall(r"^Progress: .*$", open("log.chargedParticleFoam").read(), re.M)
+pct = [int(re.match(r"Progress: (\d+) %", l).group(1)) for l in lines]
+ok = (pct == list(range(10, 101, 10))
+      and lines[-1].startswith("Progress: 100 % (t = 0.0059 s of 0.0059 s)")
+      and all(" left" in l for l in lines[:-1]))
+sys.exit(0 if ok else 1)
+PYEOF

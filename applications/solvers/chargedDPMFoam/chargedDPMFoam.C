@@ -36,6 +36,7 @@ Description
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
 #include "basicChargedCloud.H"
+#include "runProgress.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -63,6 +64,8 @@ int main(int argc, char *argv[])
     #include "createTimeControls.H"
     #include "createFields.H"
     #include "initContinuityErrs.H"
+
+    runProgress progress(runTime);
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -133,6 +136,7 @@ int main(int argc, char *argv[])
         runTime.write();
 
         runTime.printExecutionTime(Info);
+        progress.report();
     }
 
     Info<< "End\n" << endl;

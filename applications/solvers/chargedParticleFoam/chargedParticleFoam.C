@@ -21,6 +21,7 @@ Description
 
 #include "fvCFD.H"
 #include "basicChargedCloud.H"
+#include "runProgress.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,6 +44,8 @@ int main(int argc, char *argv[])
     #include "readGravitationalAcceleration.H"
     #include "createFields.H"
 
+    runProgress progress(runTime);
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -56,6 +59,7 @@ int main(int argc, char *argv[])
         runTime.write();
 
         runTime.printExecutionTime(Info);
+        progress.report();
     }
 
     Info<< "End\n" << endl;

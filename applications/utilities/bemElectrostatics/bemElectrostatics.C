@@ -293,11 +293,18 @@ int main(int argc, char *argv[])
     }
     const bool interaction = dict.getOrDefault<bool>("interactionEnergy", true);
     const bool vtk = dict.getOrDefault<bool>("writeVtk", true);
-    const fileName outDir =
-        args.path()/dict.getOrDefault<fileName>
+    // outputDir: relative to the case, or absolute as given
+    fileName outDir
+    (
+        dict.getOrDefault<fileName>
         (
             "outputDir", "postProcessing/bemElectrostatics"
-        );
+        ).expand()
+    );
+    if (!outDir.isAbsolute())
+    {
+        outDir = args.path()/outDir;
+    }
     mkDir(outDir);
 
     // Particles
