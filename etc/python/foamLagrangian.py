@@ -1,17 +1,14 @@
-"""Readers of OpenFOAM ASCII lagrangian files (IOField lists and the
-Cartesian 'positions' file), for the tutorials' and tests' Python scripts.
-etc/bashrc puts this folder on PYTHONPATH."""
+"""Readers of OpenFOAM ASCII files for the tutorials' and tests' Python
+scripts: lagrangian IOField lists, the Cartesian 'positions' file, and the
+internal field of volume fields. etc/bashrc puts this folder on PYTHONPATH."""
 import re
 
 import numpy as np
 
 
-def read_field(path):
-    """Values of an ASCII IOField (scalar or vector) as an (N,) or (N,3) array;
-    handles the list forms 'N(...)', 'N{v}' and 'N\\n(\\n...\\n)'."""
-    text = open(path).read()
-    body = text.split("// * * *", 1)[-1]
-    body = re.sub(r"//.*", "", body)
+def _list_values(body, path):
+    """The first list of body ('N(...)', 'N{v}' or 'N\\n(\\n...\\n)'), scalar
+    or vector, as an (N,) or (N,3) array."""
     m = re.search(r"(\d+)\s*([({])", body)
     if not m:
         raise ValueError(f"{path}: no list found")
@@ -36,6 +33,30 @@ def read_field(path):
     if len(arr) != n:
         raise ValueError(f"{path}: {len(arr)} values, header says {n}")
     return arr
+
+
+def read_field(path):
+    """Values of an ASCII IOField (scalar or vector) as an (N,) or (N,3) array;
+    handles the list forms 'N(...)', 'N{v}' and 'N\\n(\\n...\\n)'."""
+    body = open(path).read().split("// * * *", 1)[-1]
+    return _list_values(re.sub(r"//.*", "", body), path)
+
+
+def read_internal_field(path, n=None):
+    """internalField of an ASCII volume field (scalar or vector): the array
+    of a nonuniform field; a uniform one as its value, or repeated n times
+    when n is given."""
+    text = open(path).read()
+    m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[-+0-9.eE]+)", text)
+    if m:
+        v = np.array(m.group(1).strip("()").split(), dtype=float)
+        if n is not None:
+            return np.tile(v, (n, 1)) if v.size > 1 else np.full(n, v[0])
+        return v if v.size > 1 else float(v[0])
+    m = re.search(r"internalField\s+nonuniform\s+List<\w+>", text)
+    if not m:
+        raise ValueError(f"{path}: no internalField")
+    return _list_values(text[m.end():], path)
 
 
 def read_positions(path):

@@ -121,8 +121,6 @@ s, n = re.subn(r"    bottom \{.*\n    top +\{.*\n",
 assert n == 1
 open(p, "w").write(s)
 PYEOF
-grep -q "momentumCoupling conservativeImplicit;" constant/cloudProperties \
-    || fail "gasCoupled.tutorialCoupling (gasSettling does not set momentumCoupling conservativeImplicit)"
 sed -i -E 's/^( *shape +).*/\1(1 1 1);/; s/^( *value +)8e-5;/\12e-5;/; s/^( *nParticle +).*/\1224;/' constant/cloudProperties
 setEndTime 0.03
 sed -i -E 's/^deltaT .*/deltaT          1e-4;/' system/controlDict

@@ -39,7 +39,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "etc", "python"))
-from foamLagrangian import read_field  # noqa: E402
+from foamLagrangian import read_field, read_internal_field  # noqa: E402
 
 ap = argparse.ArgumentParser(description=__doc__,
                              formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -100,25 +100,10 @@ with open(os.path.join(case, "constant", "cloudPositions"), "w") as f:
             for k in range(2):
                 f.write(f"({(i + 0.5)*h} {(j + 0.5)*h} {(k + 0.5)*h})\n")
     f.write(")\n")
-env = dict(os.environ)
 r = subprocess.run(["blockMesh"], cwd=case, stdout=open(os.path.join(case, "log.blockMesh"), "w"),
                    stderr=subprocess.STDOUT)
 if r.returncode:
     sys.exit("blockMesh failed in " + case)
-
-
-def internal(path):
-    s = open(path).read()
-    m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[-+0-9.eE]+)", s)
-    if m:
-        v = np.array(m.group(1).strip("()").split(), dtype=float)
-        return np.tile(v, (nCells, 1)) if v.size > 1 else np.full(nCells, v[0])
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", s)
-    body = s[m.end():]
-    if m.group(1) == "vector":
-        rows = re.findall(r"\(([^()]*)\)", body)[:nCells]
-        return np.array([r.split() for r in rows], dtype=float)
-    return np.array(body[:body.index(")")].split()[:nCells], dtype=float)
 
 
 def run(scheme, ML, dtTau, direction):
@@ -152,7 +137,6 @@ def run(scheme, ML, dtTau, direction):
     ended = r.returncode == 0
     P0 = rhoG*alpha*Vc*nCells*u0 + nCells*n*mP*v0
     w0 = u0 - v0
-    Ustar = (u0 + ML*v0)/(1 + ML)
     dP, dW, bounded = 0.0, 0.0, True
     times = sorted((t for t in glob.glob(os.path.join(case, "[0-9]*"))
                     if os.path.basename(t) != "0"
@@ -160,8 +144,8 @@ def run(scheme, ML, dtTau, direction):
                    key=lambda t: float(os.path.basename(t)))
     for t in times:
         time = float(os.path.basename(t))
-        ug = internal(os.path.join(t, "U.air"))[:, 0]
-        al = internal(os.path.join(t, "alpha.air"))
+        ug = read_internal_field(os.path.join(t, "U.air"), nCells)[:, 0]
+        al = read_internal_field(os.path.join(t, "alpha.air"), nCells)
         up = read_field(os.path.join(t, "lagrangian", "cloud", "U"))[:, 0]
         P = rhoG*float(np.sum(al*ug))*Vc + n*mP*float(np.sum(up))
         if not np.isfinite(P):

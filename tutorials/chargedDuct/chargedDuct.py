@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "etc", "python"))
-from foamLagrangian import read_field  # noqa: E402
+from foamLagrangian import read_field, read_internal_field  # noqa: E402
 
 EPS0 = 8.8541878128e-12
 
@@ -71,18 +71,6 @@ def times(case):
 
 def parcel_q(case, t):
     return read_field(os.path.join(case, t, "lagrangian", "cloud", "q"))
-
-
-def read_vol_vector(path):
-    s = open(path).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<vector>\s*(\d+)\s*\(", s)
-    if not m:
-        raise RuntimeError(f"{path}: no nonuniform internalField")
-    n = int(m.group(1))
-    body = s[m.end():]
-    nums = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
-    E = np.array([[float(v) for v in e.split()] for e in nums[:n]])
-    return E
 
 
 def balance(case):
@@ -175,7 +163,7 @@ def main():
     # Mesh field in the mid-plane z = W/2 (the cells next to it)
     Epath = os.path.join(case, ts[-1], "E")
     if os.path.exists(Epath):
-        E = read_vol_vector(Epath)
+        E = read_internal_field(Epath)
         magE = np.linalg.norm(E, axis=1).reshape(NZ, NY, NX)
         mid = 0.5*(magE[NZ//2 - 1] + magE[NZ//2])
         fig, ax = plt.subplots(figsize=(9, 2.4))

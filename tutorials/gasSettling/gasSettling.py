@@ -30,22 +30,16 @@ import re
 
 import numpy as np
 
-from foamLagrangian import read_field
+from foamLagrangian import read_field, read_internal_field
 
 
-def internal_field(path):
-    """internalField of an ASCII volField (uniform or nonuniform) as array."""
-    text = open(path).read()
-    m = re.search(r"internalField\s+uniform\s+(\([^)]*\)|[-+0-9.eE]+)", text)
-    if m:
-        v = np.array(m.group(1).strip("()").split(), dtype=float)
-        return v if v.size > 1 else float(v[0])
-    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
-    n, body = int(m.group(2)), text[m.end():]
-    if m.group(1) == "vector":
-        rows = re.findall(r"\(([^()]*)\)", body[:body.index("\n)")])
-        return np.array([r.split() for r in rows[:n]], dtype=float)
-    return np.array(body[:body.index(")")].split()[:n], dtype=float)
+def parcel_volumes_masses(t):
+    """Volume and mass of the particles of each parcel written at time t
+    (n pi d^3/6, times rho)."""
+    lag = os.path.join(t, "lagrangian", "cloud")
+    v = (read_field(os.path.join(lag, "nParticle"))
+         * math.pi/6*read_field(os.path.join(lag, "d"))**3)
+    return v, v*read_field(os.path.join(lag, "rho"))
 
 
 def vec(s):
@@ -76,21 +70,18 @@ if not times:
     print("FAIL: gasSettling.fields (no time with U.air written)")
     raise SystemExit(1)
 t = times[-1]
-U = internal_field(os.path.join(t, "U.air"))
-V = internal_field(os.path.join(t, "V"))
-alpha = internal_field(os.path.join(t, "alpha.air"))
+U = read_internal_field(os.path.join(t, "U.air"))
+V = read_internal_field(os.path.join(t, "V"))
+alpha = read_internal_field(os.path.join(t, "alpha.air"))
 rho = float(re.search(r"rho.air\s+([-+0-9.eE]+)",
                       open("constant/transportProperties").read()).group(1))
 finite = bool(np.all(np.isfinite(U)))
 
 if a.weight is not None:
     g = vec(re.search(r"value\s+(\([^)]*\))", open("constant/g").read()).group(1))
-    lag = os.path.join(t, "lagrangian", "cloud")
-    vp = (read_field(os.path.join(lag, "nParticle"))
-          * math.pi/6*read_field(os.path.join(lag, "d"))**3)
-    Vp = float(np.sum(vp))
-    Mp = float(np.sum(vp*read_field(os.path.join(lag, "rho"))))
-    F = -rho*np.sum(V[:, None]*internal_field(os.path.join(t, "grad(p)")), axis=0)
+    vp, mp = parcel_volumes_masses(t)
+    Vp, Mp = float(np.sum(vp)), float(np.sum(mp))
+    F = -rho*np.sum(V[:, None]*read_internal_field(os.path.join(t, "grad(p)")), axis=0)
     W = -(rho*(float(np.sum(V)) - Vp) + Mp)*g
     err = float(np.linalg.norm(F - W)/np.linalg.norm(W))
     print(("PASS" if finite and err <= a.weight else "FAIL")
@@ -100,7 +91,7 @@ if a.weight is not None:
           f" {Mp*float(np.linalg.norm(g)):.4g} N); relative difference"
           f" {err:.3g} <= {a.weight})")
 elif a.momentum is None:
-    C = internal_field(os.path.join(t, "C"))
+    C = read_internal_field(os.path.join(t, "C"))
     left = C[:, 0] < 5e-3
     wLeft = float(np.average(U[left, 2], weights=V[left]))
     wRight = float(np.average(U[~left, 2], weights=V[~left]))
@@ -117,11 +108,9 @@ else:
     d = float(re.search(r"value\s+([-+0-9.eE]+)", cp).group(1))
     P0 = nInj*nParticle*rho0*math.pi/6*d**3*U0
     # The parcels as written at t (after the step's coupling correction)
-    lag = os.path.join(t, "lagrangian", "cloud")
-    mp = (read_field(os.path.join(lag, "nParticle"))
-          * read_field(os.path.join(lag, "rho"))
-          * math.pi/6*read_field(os.path.join(lag, "d"))**3)
-    Pp = np.sum(mp[:, None]*read_field(os.path.join(lag, "U")), axis=0)
+    _, mp = parcel_volumes_masses(t)
+    Pp = np.sum(mp[:, None]*read_field(os.path.join(t, "lagrangian", "cloud", "U")),
+                axis=0)
     Pg = rho*np.sum((alpha*V)[:, None]*U, axis=0)
     lost = P0 - Pp
     err = float(np.linalg.norm(Pg - lost)/np.linalg.norm(lost))

@@ -13,11 +13,12 @@ Description
     solved by PIMPLE with its volume fraction alphac = 1 - theta from the
     cloud and the two-way momentum exchange of the cloud's coupled forces
     (drag, pressure gradient, ...: cloudSU, cloudVolSUSu), as DPMFoam does:
-    its UcEqn.H and pEqn.H are included as they are. With the cloud's
-    solution/momentumCoupling conservativeImplicit, cloudSU is implicit in
-    the drag and the parcels get their share of the carrier's velocity
-    change after the PIMPLE loop (correctCoupling): the momentum one phase
-    gains is the other's loss.
+    its pEqn.H is included as it is; UcEqn.H (this folder) is DPMFoam's
+    momentum equation, or its conservative form with the cloud's
+    solution/momentumCoupling conservativeImplicit. Then cloudSU is
+    implicit in the drag and the parcels get their share of the carrier's
+    velocity change after the PIMPLE loop (correctCoupling): the momentum
+    one phase gains is the other's loss.
 
     The cloud (constant/<cloud>Properties, -cloud option, default 'cloud')
     is the basicChargedCloud of chargedParticleFoam: electrostatics,

@@ -366,7 +366,7 @@ Foam::EllipsoidCloud<CloudType>::SU(volVectorField& U)
     (
         this->mesh().V()*this->db().time().deltaT()
     );
-    volScalarField::Internal C
+    volScalarField::Internal CbyVdt
     (
         IOobject
         (
@@ -377,11 +377,12 @@ Foam::EllipsoidCloud<CloudType>::SU(volVectorField& U)
         this->mesh(),
         dimensionedScalar(dimMass, Zero)
     );
-    C.field() = couplingCoeff_;
+    CbyVdt.field() = couplingCoeff_;
+    CbyVdt /= Vdt;
 
     // The carrier gains UTrans (taken by the parcels at U0) and
     // -C (U - U0): the parcels get +C (U - U0) in correctCoupling
-    return this->UTrans()/Vdt - fvm::Sp(C/Vdt, U) + C/Vdt*U;
+    return this->UTrans()/Vdt - fvm::Sp(CbyVdt, U) + CbyVdt*U;
 }
 
 
