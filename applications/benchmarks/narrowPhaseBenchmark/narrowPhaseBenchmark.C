@@ -15,6 +15,13 @@ Description
         robust          contact(e1, e2, method::robust)
         polynomial      contact(e1, e2, method::polynomial)
         plane           ellipsoidContact::ellipsoidPlane(e1, p0, nOut)
+        gradR           ellipsoidContact::reducedRadiusGradient(e1, e2, r)
+                        on the robust result r (part of robust, timed alone
+                        on overlapping pairs for its share of the cost)
+        plane, no gradR the ellipsoid-plane contact without the gradient of
+                        R: support point, depth and R = 1/K(x1) by
+                        ellipsoid::curvature (Eq. 37), written out here as
+                        the reference for the gradient's cost in plane
 
     and each time divided by the sphere fast path (automatic on the sphere
     population). All contact() methods include the intersection test.
@@ -210,6 +217,7 @@ struct pairCase
     point p0;           // plane point
     vector nOut;        // plane outward unit normal
     scalar delta;       // constructed overlap (0: separated)
+    ellipsoidContact::result robust;    // method::robust, for gradR
 };
 
 
@@ -294,8 +302,13 @@ population makePopulation
             e2AtOrigin.moved(c2, R2),
             p0,
             nOut,
-            delta
+            delta,
+            ellipsoidContact::result()
         };
+        pc.robust = ellipsoidContact::contact
+        (
+            pc.e1, pc.e2, ellipsoidContact::method::robust
+        );
         pop.pairs.push_back(pc);
     }
 
@@ -409,6 +422,8 @@ struct row
     scalar tRobust = 0;
     scalar tPolynomial = 0;
     scalar tPlane = 0;
+    scalar tGradR = -1;             // < 0: not applicable
+    scalar tPlaneNoGradR = 0;
 
     label nContact = 0;             // pairs the robust method treated
     scalar robustIterations = 0;    // mean over nContact
@@ -545,9 +560,22 @@ row benchmark(const population& pop, scalar& checksum)
     {
         return fold(ellipsoidPlane(pc.e1, pc.p0, pc.nOut));
     };
+    auto kGradR = [](const pairCase& pc) -> scalar
+    {
+        const radiusGradient d = reducedRadiusGradient(pc.e1, pc.e2, pc.robust);
+        return d.centre1.x() + d.rotation1.y() + d.rotation2.z();
+    };
+    auto kPlaneNoGradR = [](const pairCase& pc) -> scalar
+    {
+        const point x1 = pc.e1.support(-pc.nOut);
+        const scalar depth =
+            pc.e1.supportDistance(pc.nOut) - ((pc.e1.centre() - pc.p0) & pc.nOut);
+        return depth > 0 ? depth + 1/pc.e1.curvature(x1) : x1.x();
+    };
+    const bool overlapping = !pop.pairs.empty() && pop.pairs[0].delta > 0;
 
-    std::vector<scalar> tI, tA, tS, tR, tP, tL;
-    label nI = 1, nA = 1, nS = 1, nR = 1, nP = 1, nL = 1;
+    std::vector<scalar> tI, tA, tS, tR, tP, tL, tG, tL0;
+    label nI = 1, nA = 1, nS = 1, nR = 1, nP = 1, nL = 1, nG = 1, nL0 = 1;
     for (label rep = -1; rep < nRepeat; ++rep)
     {
         timeKernel(pop.pairs, kIntersect, rep, nI, tI, checksum);
@@ -559,6 +587,11 @@ row benchmark(const population& pop, scalar& checksum)
         timeKernel(pop.pairs, kRobust, rep, nR, tR, checksum);
         timeKernel(pop.pairs, kPolynomial, rep, nP, tP, checksum);
         timeKernel(pop.pairs, kPlane, rep, nL, tL, checksum);
+        timeKernel(pop.pairs, kPlaneNoGradR, rep, nL0, tL0, checksum);
+        if (overlapping && !pop.spheres)
+        {
+            timeKernel(pop.pairs, kGradR, rep, nG, tG, checksum);
+        }
     }
 
     r.tIntersect = median(tI);
@@ -567,6 +600,11 @@ row benchmark(const population& pop, scalar& checksum)
     r.tRobust = median(tR);
     r.tPolynomial = median(tP);
     r.tPlane = median(tL);
+    r.tPlaneNoGradR = median(tL0);
+    if (!tG.empty())
+    {
+        r.tGradR = median(tG);
+    }
 
     return r;
 }
@@ -786,6 +824,26 @@ int main(int argc, char *argv[])
             fmtRatio(r.tRobust, ref).c_str(),
             fmtRatio(r.tPolynomial, ref).c_str(),
             fmtRatio(r.tPlane, ref).c_str());
+    }
+
+    std::printf("\nThe reduced-radius gradient (the elastic force's"
+        " -dU/dR grad R) inside the robust contact, timed alone on the"
+        " robust results:\n\n");
+    std::printf("| population | gradR [ns] | robust [ns] | gradR/robust"
+        " | ellipsoid-plane [ns] | plane without gradR [ns]"
+        " | plane/without |\n");
+    std::printf("|---|--:|--:|--:|--:|--:|--:|\n");
+    for (const row& r : rows)
+    {
+        if (r.tGradR >= 0)
+        {
+            std::printf("| %s | %s | %s | %.3f | %s | %s | %.2f |\n",
+                r.name.c_str(),
+                fmtTime(r.tGradR).c_str(), fmtTime(r.tRobust).c_str(),
+                r.tGradR/r.tRobust, fmtTime(r.tPlane).c_str(),
+                fmtTime(r.tPlaneNoGradR).c_str(),
+                r.tPlane/r.tPlaneNoGradR);
+        }
     }
 
     std::printf("\nChecks of the populations (untimed; fractions of"

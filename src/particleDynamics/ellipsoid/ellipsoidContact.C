@@ -35,6 +35,7 @@ namespace
 
 using namespace Foam;
 using ellipsoidContact::method;
+using ellipsoidContact::radiusGradient;
 using ellipsoidContact::result;
 
 const scalar eps = std::numeric_limits<scalar>::epsilon();
@@ -87,6 +88,45 @@ void tangents(const vector& m, vector& t1, vector& t2)
     t1 = e - (e & m)*m;
     t1 /= mag(t1);
     t2 = m ^ t1;
+}
+
+
+/*---------------------------------------------------------------------------*\
+          Gradient of the reduced radius (see ellipsoidContact.H)
+\*---------------------------------------------------------------------------*/
+
+// Mean curvature (Ruan Eq. 37) of e at its support point along the unit n,
+// as a function of n: K(n) = h(n) (tr S - n.S n)/2, h = sqrt(n.S^-1 n).
+// gradK: the tangential part of its gradient (of the extension
+// h(n) (tr S |n|^2 - n.S n)/2; only tangential changes of n occur).
+// K is even in n, so the same K and gradK serve the body whose support
+// point is along -n.
+void curvatureAlong
+(
+    const ellipsoid& e,
+    const vector& n,
+    scalar& K,
+    vector& gradK
+)
+{
+    const vector Mn = e.Sinv() & n;
+    const vector Sn = e.S() & n;
+    const scalar h = Foam::sqrt(n & Mn);
+    const scalar trS = tr(e.S());
+    const scalar tau = trS - (n & Sn);
+    K = 0.5*h*tau;
+    const vector g = (0.5*tau/h)*Mn + h*(trS*n - Sn);
+    gradK = g - (g & n)*n;
+}
+
+
+// Radii-of-curvature tensor D = grad grad h of e along the unit n,
+// applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n)
+vector radiiOfCurvature(const ellipsoid& e, const vector& n, const vector& t)
+{
+    const vector Mn = e.Sinv() & n;
+    const scalar h = Foam::sqrt(n & Mn);
+    return (e.Sinv() & t)/h - Mn*((Mn & t)/(h*h*h));
 }
 
 
@@ -452,6 +492,10 @@ result robustCore
     // differencing two possibly large coordinates
     r.overlap = max(bestState.g, scalar(0));
     r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
+    if (r.converged)
+    {
+        r.gradR = ellipsoidContact::reducedRadiusGradient(e1, e2, r);
+    }
 
     return r;
 }
@@ -889,6 +933,56 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
 }
 
 
+Foam::ellipsoidContact::radiusGradient
+Foam::ellipsoidContact::reducedRadiusGradient
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const result& r
+)
+{
+    const vector& n = r.n;
+    scalar K1, K2;
+    vector gradK1, gradK2;
+    curvatureAlong(e1, n, K1, gradK1);
+    curvatureAlong(e2, n, K2, gradK2);
+    const vector G = gradK1 + gradK2;
+
+    // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P
+    vector t1, t2;
+    tangents(n, t1, t2);
+    const vector Dt1 =
+        radiiOfCurvature(e1, n, t1) + radiiOfCurvature(e2, n, t1);
+    const vector Dt2 =
+        radiiOfCurvature(e1, n, t2) + radiiOfCurvature(e2, n, t2);
+    const scalar H11 = (t1 & Dt1) - r.overlap;
+    const scalar H22 = (t2 & Dt2) - r.overlap;
+    const scalar H12 = 0.5*((t1 & Dt2) + (t2 & Dt1));
+    const scalar det = H11*H22 - H12*H12;
+
+    radiusGradient d;
+    if (!(det > 0) || !(H11 > 0))
+    {
+        // Not a strict minimum of the depth: the normal is not a smooth
+        // function of the configuration here
+        return d;
+    }
+    const scalar G1 = t1 & G, G2 = t2 & G;
+    const vector w = ((H22*G1 - H12*G2)/det)*t1 + ((H11*G2 - H12*G1)/det)*t2;
+
+    const scalar R2 = sqr(r.reducedRadius);
+    const vector r1 = r.x1 - e1.centre();
+    const vector r2 = r.x2 - e2.centre();
+    d.centre1 = R2*w;
+    d.centre2 = -R2*w;
+    d.rotation1 =
+        -R2*((n ^ radiiOfCurvature(e1, n, w)) - (r1 ^ w) - (n ^ gradK1));
+    d.rotation2 =
+        -R2*((n ^ radiiOfCurvature(e2, n, w)) + (r2 ^ w) - (n ^ gradK2));
+    return d;
+}
+
+
 Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
 (
     const ellipsoid& e,
@@ -922,7 +1016,16 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
     r.contact = depth > 0;
     r.overlap = max(depth, scalar(0));
     r.x2 = r.x1 + depth*nOut;
-    r.reducedRadius = r.contact ? 1/e.curvature(r.x1) : 0;
+    if (r.contact)
+    {
+        // Eq. (37) at x1 as a function of the normal, which is fixed: only
+        // the orientation moves K (Description)
+        scalar K;
+        vector gradK;
+        curvatureAlong(e, r.n, K, gradK);
+        r.reducedRadius = 1/K;
+        r.gradR.rotation1 = sqr(r.reducedRadius)*(r.n ^ gradK);
+    }
     return r;
 }
 

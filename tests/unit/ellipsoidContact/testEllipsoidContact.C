@@ -1056,6 +1056,135 @@ TEST(ellipsoidContact, ContainmentIsAnOverlap)
 }
 
 
+// Rotation by the angle |a| about the axis a (Rodrigues)
+tensor rotationBy(const vector& a)
+{
+    const double t = mag(a);
+    if (t == 0) return tensor::I;
+    const vector k = a/t;
+    const tensor K(0, -k.z(), k.y(), k.z(), 0, -k.x(), -k.y(), k.x(), 0);
+    return tensor::I + std::sin(t)*K + (1 - std::cos(t))*(K & K);
+}
+
+
+TEST(ellipsoidContact, ReducedRadiusGradientMatchesFiniteDifferences)
+{
+    // gradR against central differences of the reduced radius that the
+    // contact reports (Eq. 37 at the common-normal points): moving each
+    // centre along x, y, z and turning each body about x, y, z through its
+    // centre. Also: the gradient carries no net force or torque (R is
+    // invariant under rigid motions of the pair)
+    rng_t g(31);
+    double worst = 0, worstInvariance = 0, worstPlane = 0;
+    int nPairs = 0;
+    for (int i = 0; i < 200; ++i)
+    {
+        const body b1(randomAxes(g, 1, 10, false), toF(Vector3d::Random()), randomRotation(g));
+        const vector ax2 = randomAxes(g, 1, 10, false);
+        const knownContact k = makeContact
+        (
+            b1, ax2, randomRotation(g), randomUnit(g), logUniform(g, 1e-4, 1e-1), false
+        );
+        const ellipsoid e1 = k.b1.shape(), e2 = k.b2.shape();
+        const ellipsoidContact::result r = ellipsoidContact::contact(e1, e2);
+        ASSERT_TRUE(r.contact && r.converged);
+        ASSERT_EQ(r.used, ellipsoidContact::method::robust);
+        ++nPairs;
+
+        // R of a moved configuration (Newton from the current normal)
+        auto R = [&](const int body, const bool rotate, const vector& step)
+        {
+            const ellipsoid& e = body == 1 ? e1 : e2;
+            const ellipsoid moved =
+                rotate
+              ? e.moved(e.centre(), rotationBy(step) & e.R())
+              : e.moved(e.centre() + step, e.R());
+            const ellipsoidContact::result rm =
+                body == 1
+              ? ellipsoidContact::robustMethod(moved, e2, r.n)
+              : ellipsoidContact::robustMethod(e1, moved, r.n);
+            return rm.reducedRadius;
+        };
+
+        const double L = std::min(e1.minSemiAxis(), e2.minSemiAxis());
+        vector numeric[4] = {Zero, Zero, Zero, Zero};
+        for (int b = 1; b <= 2; ++b)
+        {
+            for (int rot = 0; rot <= 1; ++rot)
+            {
+                const double h = rot ? 1e-5 : 1e-5*L;
+                for (direction d = 0; d < 3; ++d)
+                {
+                    vector e(Zero);
+                    e[d] = h;
+                    numeric[2*(b - 1) + rot][d] =
+                        (R(b, rot, e) - R(b, rot, -e))/(2*h);
+                }
+            }
+        }
+        const vector analytic[4] =
+        {
+            r.gradR.centre1, r.gradR.rotation1, r.gradR.centre2, r.gradR.rotation2
+        };
+        const double Rr = r.reducedRadius;
+        for (int m = 0; m < 4; ++m)
+        {
+            // Scale: R/L per unit length, R per radian
+            const double scale = (m % 2 == 0) ? Rr/L : Rr;
+            worst = std::max(worst, mag(analytic[m] - numeric[m])/scale);
+        }
+        const vector netForce = r.gradR.centre1 + r.gradR.centre2;
+        const vector netTorque =
+            r.gradR.rotation1 + r.gradR.rotation2
+          + (e1.centre() ^ r.gradR.centre1) + (e2.centre() ^ r.gradR.centre2);
+        worstInvariance = std::max
+        (
+            worstInvariance, (mag(netForce)/(Rr/L) + mag(netTorque)/Rr)
+        );
+    }
+
+    // Ellipsoid on a plane: only turning the ellipsoid moves R
+    for (int i = 0; i < 200; ++i)
+    {
+        const vector ax = randomAxes(g, 1, 10, false);
+        const point c = toF(Vector3d::Random());
+        const vector nOut = randomUnit(g);
+        const ellipsoid e(ax, c, randomRotation(g));
+        const point p0 = c - (e.supportDistance(nOut) - 1e-2)*nOut;
+        const ellipsoidContact::result r = ellipsoidContact::ellipsoidPlane(e, p0, nOut);
+        ASSERT_TRUE(r.contact);
+        vector numeric(Zero);
+        const double h = 1e-5;
+        for (direction d = 0; d < 3; ++d)
+        {
+            vector a(Zero);
+            a[d] = h;
+            const ellipsoid ep = e.moved(c, rotationBy(a) & e.R());
+            const ellipsoid em = e.moved(c, rotationBy(-a) & e.R());
+            numeric[d] =
+            (
+                ellipsoidContact::ellipsoidPlane(ep, p0, nOut).reducedRadius
+              - ellipsoidContact::ellipsoidPlane(em, p0, nOut).reducedRadius
+            )/(2*h);
+        }
+        worstPlane = std::max
+        (
+            worstPlane, mag(r.gradR.rotation1 - numeric)/r.reducedRadius
+        );
+        EXPECT_EQ(r.gradR.centre1, vector::zero);
+    }
+
+    std::cout
+        << "    gradR vs central differences (" << nPairs << " pairs, 200 on"
+        << " a plane): max error " << std::scientific << std::setprecision(2)
+        << worst << " (pairs), " << worstPlane << " (plane) of R/L, R;"
+        << " net force + torque " << worstInvariance << std::endl;
+    EXPECT_LT(worst, 1e-6);
+    EXPECT_LT(worstPlane, 1e-6);
+    EXPECT_LT(worstInvariance, 1e-9);
+}
+
+
 TEST(ellipsoidContact, SymmetryOfThePair)
 {
     // Swapping the bodies swaps the points and flips the normal

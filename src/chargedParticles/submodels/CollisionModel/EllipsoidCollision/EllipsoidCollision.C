@@ -372,6 +372,19 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
 
 
 template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::hertzRadiusDerivative
+(
+    const ellipsoidContact::result& c,
+    const contactLaw& law
+)
+{
+    const scalar delta = c.overlap;
+    const scalar R = c.reducedRadius;
+    return R > 0 ? (4.0/15.0)*law.Estar*sqr(delta)*Foam::sqrt(delta/R) : 0;
+}
+
+
+template<class CloudType>
 Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
 (
     const ellipsoidContact::result& c,
@@ -834,6 +847,8 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
     if (swapped)
     {
         std::swap(c.x1, c.x2);
+        std::swap(c.gradR.centre1, c.gradR.centre2);
+        std::swap(c.gradR.rotation1, c.gradR.rotation2);
         c.n = -c.n;
     }
     return c;
@@ -902,10 +917,13 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
         )
       : Zero;
 
+    // The elastic force of the change of R (see Description)
+    const scalar dUdR = hertzRadiusDerivative(c, pp_);
+
     // Torques about the centroids (Ruan Eq. 40)
-    torqueA += ((xc - xA) ^ F) + Mr;
-    torqueB -= ((xc - xB) ^ F) + Mr;
-    return F;
+    torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
+    torqueB -= ((xc - xB) ^ F) + Mr + dUdR*c.gradR.rotation2;
+    return F - dUdR*c.gradR.centre1;
 }
 
 
@@ -1119,8 +1137,10 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 c.reducedRadius
             );
         }
+        // The elastic torque of the change of R (see Description)
+        const scalar dUdR = hertzRadiusDerivative(c, pw_);
         force_[i] += F;
-        torque_[i] += ((xc - xp) ^ F) + Mr;
+        torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
     };
 
     // Parcels with wall faces in reach (all parcels when some have
