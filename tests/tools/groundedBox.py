@@ -22,7 +22,13 @@ SI units throughout: x, L in m, q in C, E in V/m, phi in V; the force on
 charge i is q_i E_i. eps0 = 8.8541878128e-12 F/m (CODATA 2018, as
 pairwiseCoulomb).
 
-Python interface (import from tests/tools):
+Insulating walls (zero normal field) on one axis: parity (+1, -1, -1) makes
+the images across that axis of the same sign, so the sum is even there (the
+rectangular duct with grounded sides and insulating ends); at least two axes
+must be grounded (a neutral cell without dipole).
+
+Python interface (import from tests/tools; every function also takes
+parity=(px, py, pz), default (-1, -1, -1): all walls grounded):
 
     field(x, q, L, eps_r=1, tol=1e-13, origin=0)
         (N,3) field at each charge from all the other charges and all images
@@ -86,19 +92,31 @@ def _inside(x, L, what):
         raise ValueError(f"{what} {bad[:5].tolist()} not strictly inside the box (0, {L.tolist()})")
 
 
-def images(x, q, L):
+def _parity(parity):
+    p = np.broadcast_to(np.asarray(parity, dtype=int), (3,))
+    if np.any((p != 1) & (p != -1)) or np.count_nonzero(p == -1) < 2:
+        raise ValueError(f"parity must be +1 (insulating) or -1 (grounded) per axis, "
+                         f"with at least two grounded pairs of walls, got {parity}")
+    return p
+
+
+def images(x, q, L, parity=(-1, -1, -1)):
     """The 8N charges of one period (2L) of the image lattice.
 
+    parity per axis: -1 for a pair of grounded walls (the image across one
+    has the opposite charge), +1 for insulating walls (the same charge).
+    With two or three grounded axes the cell is neutral with zero dipole.
     Returns (y, s, ident): positions (8N,3), charges (8N,), and for each
     original charge the index of its unreflected copy (= its own index).
     """
+    p = _parity(parity)
     y, s = [], []
     for sx in (1, -1):
         for sy in (1, -1):
             for sz in (1, -1):
                 sg = np.array([sx, sy, sz], dtype=float)
                 y.append(x*sg)
-                s.append(q*(sx*sy*sz))
+                s.append(q*np.prod(np.where(p < 0, sg, 1.0)))
     return np.concatenate(y), np.concatenate(s), np.arange(len(x))
 
 
@@ -173,14 +191,14 @@ def _ewald(t, y, s, Lp, self_idx, tol):
     return phi, E
 
 
-def _evaluate(t, x, q, L, eps_r, tol, origin, at_charges):
+def _evaluate(t, x, q, L, eps_r, tol, origin, at_charges, parity=(-1, -1, -1)):
     L, o = _box(L, origin)
     x = np.atleast_2d(np.asarray(x, dtype=float)) - o
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if x.shape != (len(q), 3):
         raise ValueError("x must be (N,3) and q (N,)")
     _inside(x, L, "charges")
-    y, s, ident = images(x, q, L)
+    y, s, ident = images(x, q, L, parity)
     if at_charges:
         t, self_idx = x, ident
     else:
@@ -195,34 +213,34 @@ def _evaluate(t, x, q, L, eps_r, tol, origin, at_charges):
     return k*phi, k*E
 
 
-def field(x, q, L, eps_r=1.0, tol=1e-13, origin=0.0):
+def field(x, q, L, eps_r=1.0, tol=1e-13, origin=0.0, parity=(-1, -1, -1)):
     """Field [V/m] at each charge: all other charges and all images, not self."""
-    return _evaluate(None, x, q, L, eps_r, tol, origin, True)[1]
+    return _evaluate(None, x, q, L, eps_r, tol, origin, True, parity)[1]
 
 
-def potential(x, q, L, eps_r=1.0, tol=1e-13, origin=0.0):
+def potential(x, q, L, eps_r=1.0, tol=1e-13, origin=0.0, parity=(-1, -1, -1)):
     """Potential [V] at each charge: all other charges and all images, not self."""
-    return _evaluate(None, x, q, L, eps_r, tol, origin, True)[0]
+    return _evaluate(None, x, q, L, eps_r, tol, origin, True, parity)[0]
 
 
-def field_at(points, x, q, L, eps_r=1.0, tol=1e-13, origin=0.0):
+def field_at(points, x, q, L, eps_r=1.0, tol=1e-13, origin=0.0, parity=(-1, -1, -1)):
     """Field [V/m] at arbitrary points strictly inside the box."""
-    return _evaluate(points, x, q, L, eps_r, tol, origin, False)[1]
+    return _evaluate(points, x, q, L, eps_r, tol, origin, False, parity)[1]
 
 
-def potential_at(points, x, q, L, eps_r=1.0, tol=1e-13, origin=0.0):
+def potential_at(points, x, q, L, eps_r=1.0, tol=1e-13, origin=0.0, parity=(-1, -1, -1)):
     """Potential [V] at arbitrary points strictly inside the box."""
-    return _evaluate(points, x, q, L, eps_r, tol, origin, False)[0]
+    return _evaluate(points, x, q, L, eps_r, tol, origin, False, parity)[0]
 
 
-def image_sum(x, q, L, shells, eps_r=1.0, origin=0.0):
+def image_sum(x, q, L, shells, eps_r=1.0, origin=0.0, parity=(-1, -1, -1)):
     """Brute force: the image sum over the (2 shells + 1)^3 periods of 8N
     image charges nearest the box (a cube of whole neutral cells), self
     excluded. Converges to field() as shells grows."""
     L, o = _box(L, origin)
     x = np.atleast_2d(np.asarray(x, dtype=float)) - o
     q = np.atleast_1d(np.asarray(q, dtype=float))
-    y, s, ident = images(x, q, L)
+    y, s, ident = images(x, q, L, parity)
     n = np.arange(-shells, shells + 1)
     sh = np.stack(np.meshgrid(n, n, n, indexing="ij"), -1).reshape(-1, 3)*(2.0*L)
     Y = (y[None, :, :] + sh[:, None, :]).reshape(-1, 3)
@@ -303,6 +321,30 @@ def selftest():
           "max rel. |E_shells - E_Ewald| for shells 1,2,4,8,16: "
           + ", ".join(f"{e:.2e}" for e in errs)
           + "; observed orders " + ", ".join(f"{r:.2f}" for r in rates))
+
+    # 5. Duct (insulating ends x = 0, Lx; grounded sides): zero potential on
+    #    the sides, zero normal field on the ends, image shells converge
+    P = (1, -1, -1)
+    L = np.array([3.0, 0.4, 0.5])
+    x = L*(0.05 + 0.9*rng.random((10, 3)))
+    q = qe*(2*rng.random(10) - 1)
+    w = L*rng.random((40, 3))
+    for k in range(40):
+        a = 1 + k % 2
+        w[k, a] = 1e-12*L[a] if k % 4 < 2 else (1 - 1e-12)*L[a]
+    phiS = np.abs(potential(x, q, L, parity=P)).max()
+    errS = np.abs(potential_at(w, x, q, L, parity=P)).max()/phiS
+    e = L*rng.random((20, 3))
+    e[:, 0] = np.where(np.arange(20) % 2, 1e-12, 1 - 1e-12)*L[0]
+    Ee = field_at(e, x, q, L, parity=P)
+    errE = np.abs(Ee[:, 0]).max()/np.abs(Ee).max()
+    Eref = field(x[:4], q[:4], L, parity=P)
+    Eb = image_sum(x[:4], q[:4], L, 16, parity=P)
+    errB = np.abs(Eb - Eref).max()/np.abs(Eref).max()
+    check("duct", errS < 1e-9 and errE < 1e-9 and errB < 2e-3,
+          f"parity (+1, -1, -1): max |phi| on the sides / max |phi| {errS:.1e}, "
+          f"max |E_x| on the ends / max |E| {errE:.1e} (tol 1e-9); "
+          f"16 image shells vs Ewald {errB:.1e} (< 2e-3)")
     return ok
 
 

@@ -362,7 +362,7 @@ void Foam::meshPoisson::addWallImages
     labelList& origin
 )
 {
-    // The images of each shape in the walls within its radius (method of
+    // The images of each shape in the walls within 2R (method of
     // images for a plane; for two or three perpendicular planes, an edge or
     // a corner, also the images of the images). Deposited together, a
     // shape cut by the walls and its images solve the wall problem exactly
@@ -374,29 +374,31 @@ void Foam::meshPoisson::addWallImages
     }
     const label n0 = x.size();
     const scalar R = radius_;
-    // Only charges within R of this processor's cells matter here (their
-    // shapes, images and corrections reach no further)
+    // Only charges within 4R of this processor's cells matter here (a
+    // charge within 2R of a wall has its image within 4R, and the image's
+    // correction reaches 2R)
     DynamicList<label> here;
     DynamicList<point> xHere;
     for (label i = 0; i < n0; ++i)
     {
-        if (magSqr(localBb_.nearest(x[i]) - x[i]) < sqr(2*R))
+        if (magSqr(localBb_.nearest(x[i]) - x[i]) < sqr(4*R))
         {
             here.append(i);
             xHere.append(x[i]);
         }
     }
 
-    // The (charge, wall face) pairs in range, grouped by charge
+    // The (charge, wall face) pairs in range (2R: the shape reaches R
+    // beyond, the correction of its image 2R), grouped by charge
     DynamicList<labelPair> pairs;
     forPairsWithinCutoff
     (
-        xHere, wallC_, R + wallRMax_, -1,
+        xHere, wallC_, 2*R + wallRMax_, -1,
         [&](const label t, const label f, const vector& r, const scalar)
         {
             // r = x - c_f; the wall lies at distance d along n_f
             const scalar d = -(r & wallN_[f]);
-            if (d > 0 && d < R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
+            if (d > 0 && d < 2*R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
             {
                 pairs.append(labelPair(here[t], f));
             }
@@ -514,10 +516,9 @@ void Foam::meshPoisson::addWallImages
 }
 
 
-void Foam::meshPoisson::depositShaped
+void Foam::meshPoisson::shapeWeights
 (
     const UList<point>& x,
-    const UList<scalar>& q,
     const labelUList& origin,
     const label nReal
 )
@@ -525,38 +526,39 @@ void Foam::meshPoisson::depositShaped
     const scalarField& V = mesh_.V().field();
     const scalar R = radius_;
 
-    // Weights: the S2 density (R - r) times the cell volume, normalised
-    // over all cells of all processors (conservative deposition)
-    // One search per charge: the cells within R and their weights (R - r)
+    // One search per source: the local cells within R and their weights
+    // (R - r) V, summed per charge over its copies, images and all
+    // processors (conservative deposition)
     DynamicList<label> near;
     DynamicList<scalar> dist;
-    DynamicList<label> cellBuf;
-    DynamicList<scalar> weightBuf;
-    labelList start(x.size() + 1, 0);
-    scalarField wSum(nReal, Zero);
+    shapeCells_.clear();
+    shapeWeights_.clear();
+    shapeStart_.setSize(x.size() + 1);
+    shapeStart_[0] = 0;
+    shapeSum_.setSize(nReal);
+    shapeSum_ = 0;
     forAll(x, i)
     {
-        if (magSqr(localBb_.nearest(x[i]) - x[i]) >= sqr(R))
+        if (magSqr(localBb_.nearest(x[i]) - x[i]) < sqr(R))
         {
-            start[i + 1] = cellBuf.size();
-            continue;
+            cellsNear(x[i], R, near, dist);
+            scalar& w = shapeSum_[origin[i]];
+            forAll(near, j)
+            {
+                const scalar wj = (R - dist[j])*V[near[j]];
+                shapeCells_.append(near[j]);
+                shapeWeights_.append(wj);
+                w += wj;
+            }
         }
-        cellsNear(x[i], R, near, dist);
-        scalar& w = wSum[origin[i]];
-        forAll(near, j)
-        {
-            cellBuf.append(near[j]);
-            weightBuf.append(R - dist[j]);
-            w += (R - dist[j])*V[near[j]];
-        }
-        start[i + 1] = cellBuf.size();
+        shapeStart_[i + 1] = shapeCells_.size();
     }
-    Pstream::listCombineGather(wSum, plusEqOp<scalar>());
-    Pstream::listCombineScatter(wSum);
+    Pstream::listCombineGather(shapeSum_, plusEqOp<scalar>());
+    Pstream::listCombineScatter(shapeSum_);
 
-    forAll(wSum, i)
+    forAll(shapeSum_, i)
     {
-        if (!(wSum[i] > 0))
+        if (!(shapeSum_[i] > 0))
         {
             FatalIOErrorInFunction(coeffs_)
                 << "No cell centre lies within radius " << R << " m of the "
@@ -565,17 +567,78 @@ void Foam::meshPoisson::depositShaped
                 << "(a few cell sizes for accuracy)" << exit(FatalIOError);
         }
     }
+}
 
+
+void Foam::meshPoisson::composeSourceMaps(const label nReal)
+{
+    // Copies and images come after the source they were made from
+    sourceT_.setSize(nReal + srcOf_.size());
+    sourceSign_.setSize(sourceT_.size());
+    for (label i = 0; i < nReal; ++i)
+    {
+        sourceT_[i] = tensor::I;
+        sourceSign_[i] = 1;
+    }
+    forAll(srcOf_, j)
+    {
+        const label s = srcOf_[j];
+        sourceT_[nReal + j] = srcT_[j] & sourceT_[s];
+        sourceSign_[nReal + j] = srcSign_[j]*sourceSign_[s];
+    }
+}
+
+
+void Foam::meshPoisson::depositShaped
+(
+    const UList<scalar>& q,
+    const labelUList& origin
+)
+{
+    const scalarField& V = mesh_.V().field();
     scalarField& rho = rhoQ_.primitiveFieldRef();
     rho = 0;
-    forAll(x, i)
+    forAll(q, i)
     {
-        const scalar qw = q[i]/wSum[origin[i]];
-        for (label j = start[i]; j < start[i + 1]; ++j)
+        const scalar qw = q[i]/shapeSum_[origin[i]];
+        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
         {
-            rho[cellBuf[j]] += qw*weightBuf[j];
+            const label celli = shapeCells_[k];
+            rho[celli] += qw*shapeWeights_[k]/V[celli];
         }
     }
+}
+
+
+void Foam::meshPoisson::averageOverShapes
+(
+    const labelUList& origin,
+    const label nReal
+)
+{
+    // The deposition's weights again; a copy's or image's cells hold the
+    // part of the shape that lies beyond a cyclic patch or a wall, where
+    // the field is the mapped one, sign T^T E (see Description)
+    const vectorField& E = E_.primitiveField();
+    shapeField_.setSize(nReal);
+    shapeField_ = Zero;
+    for (label i = 0; i < shapeStart_.size() - 1; ++i)
+    {
+        if (shapeStart_[i + 1] == shapeStart_[i])
+        {
+            continue;
+        }
+        vector sum(Zero);
+        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
+        {
+            sum += shapeWeights_[k]*E[shapeCells_[k]];
+        }
+        shapeField_[origin[i]] +=
+            i < nReal ? sum : sourceSign_[i]*(sourceT_[i].T() & sum);
+    }
+    Pstream::listCombineGather(shapeField_, plusEqOp<vector>());
+    Pstream::listCombineScatter(shapeField_);
+    shapeField_ /= shapeSum_;
 }
 
 
@@ -598,14 +661,11 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     radius_(readRadius()),
     interpolationScheme_
     (
-        coeffs.lookupOrDefault<word>
-        (
-            "interpolation",
-            correction_ == correctionType::shaped ? "cellPoint" : "cell"
-        )
+        coeffs.lookupOrDefault<word>("interpolation", "cell")
     ),
     solveInterval_(coeffs.lookupOrDefault<label>("solveInterval", 1)),
     nEvaluations_(0),
+    solved_(false),
     periodicShifts_(),
     Phi_
     (
@@ -658,6 +718,15 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             << "Entry epsilonR (relative permittivity of the medium) = "
             << epsilonR_ << " must be > 0" << exit(FatalIOError);
     }
+    if (correction_ == correctionType::shaped && coeffs_.found("interpolation"))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry interpolation in " << coeffs_.name().c_str()
+            << " applies to correction cellCentroid only: the shaped"
+            << " correction averages the mesh field over each charge's own"
+            << " shape with its deposition weights (momentum conserving);"
+            << " remove the entry" << exit(FatalIOError);
+    }
     if (solveInterval_ < 1)
     {
         FatalIOErrorInFunction(coeffs_)
@@ -693,7 +762,12 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     {
         Info<< ", images in " << wallC_.size() << " wall faces";
     }
-    Info<< "), interpolation " << interpolationScheme_
+    Info<< "), "
+        << (
+               correction_ == correctionType::shaped
+             ? word("field averaged over the shapes")
+             : "interpolation " + interpolationScheme_
+           )
         << ", solved every " << solveInterval_ << " evaluation(s)";
     if (periodicShifts_.size())
     {
@@ -738,7 +812,11 @@ void Foam::meshPoisson::solve()
     PhiEqn.solve();
 
     E_ = -fvc::grad(Phi_);
-    EInterp_ = interpolation<vector>::New(interpolationScheme_, E_);
+    if (correction_ == correctionType::cellCentroid)
+    {
+        EInterp_ = interpolation<vector>::New(interpolationScheme_, E_);
+    }
+    solved_ = true;
 }
 
 
@@ -763,7 +841,7 @@ bool Foam::meshPoisson::reapplyTransforms
     const UList<scalar>& q
 )
 {
-    if (x.size() != nRealSources_ || !EInterp_.valid())
+    if (x.size() != nRealSources_ || !solved_)
     {
         return false;
     }
@@ -778,12 +856,12 @@ bool Foam::meshPoisson::reapplyTransforms
         const label i = nReal + j;
         xs_[i] = (srcT_[j] & xs_[s]) + srcB_[j];
         qs_[i] = srcSign_[j]*qs_[s];
-        // An image lies within 2 R of its charge (a charge that left and
+        // An image lies within 4 R of its charge (a charge that left and
         // a new one in its slot would not): else search again
         if
         (
             srcT_[j] != tensor::I
-         && magSqr(xs_[i] - xs_[s]) > sqr(2*radius_)
+         && magSqr(xs_[i] - xs_[s]) > sqr(4*radius_)
         )
         {
             return false;
@@ -803,7 +881,7 @@ void Foam::meshPoisson::update
 {
     const label nReal = x.size();
     const bool solveNow =
-        nEvaluations_++ % solveInterval_ == 0 || !EInterp_.valid();
+        nEvaluations_++ % solveInterval_ == 0 || !solved_;
 
     // Sources: the charges, their periodic copies and wall images. Found
     // when solving; in between, the same copies and images of the moved
@@ -816,19 +894,31 @@ void Foam::meshPoisson::update
         srcT_.clear();
         srcB_.clear();
         srcSign_.clear();
-        addPeriodicCopies(xs_, qs_, origin_, 1.5*radius_);
+        addPeriodicCopies
+        (
+            xs_, qs_, origin_,
+            (correction_ == correctionType::shaped ? 2.5 : 1.5)*radius_
+        );
         if (correction_ == correctionType::shaped)
         {
             addWallImages(xs_, qs_, origin_);
+            composeSourceMaps(nReal);
         }
         nRealSources_ = nReal;
+    }
+
+    // The shapes at the charges' current positions: deposited when
+    // solving, and the weights of the field's average
+    if (correction_ == correctionType::shaped)
+    {
+        shapeWeights(xs_, origin_, nReal);
     }
 
     if (solveNow)
     {
         if (correction_ == correctionType::shaped)
         {
-            depositShaped(xs_, qs_, origin_, nReal);
+            depositShaped(qs_, origin_);
         }
         else
         {
@@ -843,6 +933,11 @@ void Foam::meshPoisson::update
         }
         rhoQ_.correctBoundaryConditions();
         solve();
+    }
+
+    if (correction_ == correctionType::shaped)
+    {
+        averageOverShapes(origin_, nReal);
     }
 }
 
@@ -871,7 +966,7 @@ void Foam::meshPoisson::addNearField
     {
         forPairsWithinCutoff
         (
-            xT, xs, radius_, myStart,
+            xT, xs, 2*radius_, myStart,
             [&](const label t, const label s, const vector& r, const scalar r2)
             {
                 if (r2 == 0)

@@ -82,19 +82,27 @@ void Foam::MeshPoisson<CloudType>::calculate()
         this->combine(allC, allQ, cS, dummy, o);
     }
 
-    // Mesh field at the parcels (their own tet coordinates: no search;
-    // at the centre within the cell while lazy tracking lets it drift),
-    // then the near-field correction
+    // Mesh field at the parcels: averaged over their shapes (shaped), or
+    // interpolated (their own tet coordinates: no search; at the centre
+    // within the cell while lazy tracking lets it drift); then the
+    // near-field correction
     solver_->update(xS, qS, offset, cells);
-    const interpolation<vector>& EMesh = solver_->interpolator();
     vectorField E(n);
-    i = 0;
-    for (const auto& p : this->owner())
+    if (centroids)
     {
-        E[i++] =
-            p.drift() == vector::zero
-          ? EMesh.interpolate(p.coordinates(), p.currentTetIndices())
-          : EMesh.interpolate(p.centre(), p.cell());
+        const interpolation<vector>& EMesh = solver_->interpolator();
+        i = 0;
+        for (const auto& p : this->owner())
+        {
+            E[i++] =
+                p.drift() == vector::zero
+              ? EMesh.interpolate(p.coordinates(), p.currentTetIndices())
+              : EMesh.interpolate(p.centre(), p.cell());
+        }
+    }
+    else
+    {
+        E = SubList<vector>(solver_->shapeField(), n, offset);
     }
     solver_->addNearField
     (
