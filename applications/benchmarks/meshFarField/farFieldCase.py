@@ -59,7 +59,7 @@ def _write(path, obj, body, cls="dictionary"):
 class FarFieldCase:
     def __init__(self, path, x, q, L, n, model, coeffs="", periodic=False,
                  steps=1, solver="PCG", tol=1e-12, boundary=None, Phi=None,
-                 d=1e-6, parcelEntries=""):
+                 d=1e-6, parcelEntries="", blockMesh=None):
         self.path, self.x, self.q = path, np.asarray(x), np.asarray(q)
         self.L, self.n, self.model = L, n, model
         self.coeffs, self.periodic, self.steps = coeffs, periodic, steps
@@ -69,6 +69,9 @@ class FarFieldCase:
         self.boundary, self.Phi = boundary, Phi
         # parcel diameter and further entries of every parcel (e.g. epsilonR)
         self.d, self.parcelEntries = d, parcelEntries
+        # optional: a whole blockMeshDict body (another geometry: L, n and
+        # boundary are then unused)
+        self.blockMesh = blockMesh
 
     def write(self):
         p = self.path
@@ -93,7 +96,10 @@ class FarFieldCase:
         type wall;
         faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7));
     }"""
-        _write(p + "/system/blockMeshDict", "blockMeshDict", f"""
+        if self.blockMesh:
+            _write(p + "/system/blockMeshDict", "blockMeshDict", self.blockMesh)
+        else:
+            _write(p + "/system/blockMeshDict", "blockMeshDict", f"""
 scale 1;
 vertices ((0 0 0) ({L[0]!r} 0 0) ({L[0]!r} {L[1]!r} 0) (0 {L[1]!r} 0)
     (0 0 {L[2]!r}) ({L[0]!r} 0 {L[2]!r}) ({L[0]!r} {L[1]!r} {L[2]!r})
