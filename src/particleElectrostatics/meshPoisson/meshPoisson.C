@@ -707,6 +707,9 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         -fvc::grad(Phi_)
     ),
     wallRMax_(0),
+    shapeFresh_(false),
+    farStart_(-1),
+    farValid_(false),
     nRealSources_(-1),
     binOrigin_(Zero),
     binSize_(1),
@@ -856,12 +859,13 @@ bool Foam::meshPoisson::reapplyTransforms
         const label i = nReal + j;
         xs_[i] = (srcT_[j] & xs_[s]) + srcB_[j];
         qs_[i] = srcSign_[j]*qs_[s];
-        // An image lies within 4 R of its charge (a charge that left and
-        // a new one in its slot would not): else search again
+        // An image lies within 4 sqrt(3) R of its charge (up to three
+        // reflections in walls within 2 R; a charge that left and a new
+        // one in its slot would not): else search again
         if
         (
             srcT_[j] != tensor::I
-         && magSqr(xs_[i] - xs_[s]) > sqr(4*radius_)
+         && magSqr(xs_[i] - xs_[s]) > 48*sqr(radius_)
         )
         {
             return false;
@@ -886,7 +890,8 @@ void Foam::meshPoisson::update
     // Sources: the charges, their periodic copies and wall images. Found
     // when solving; in between, the same copies and images of the moved
     // charges (unless the charges changed)
-    if (solveNow || !reapplyTransforms(x, q))
+    const bool sourcesFound = solveNow || !reapplyTransforms(x, q);
+    if (sourcesFound)
     {
         xs_ = x;
         qs_ = q;
@@ -907,17 +912,12 @@ void Foam::meshPoisson::update
         nRealSources_ = nReal;
     }
 
-    // The shapes at the charges' current positions: deposited when
-    // solving, and the weights of the field's average
-    if (correction_ == correctionType::shaped)
-    {
-        shapeWeights(xs_, origin_, nReal);
-    }
-
+    shapeFresh_ = false;
     if (solveNow)
     {
         if (correction_ == correctionType::shaped)
         {
+            shapeWeights(xs_, origin_, nReal);
             depositShaped(qs_, origin_);
         }
         else
@@ -933,11 +933,17 @@ void Foam::meshPoisson::update
         }
         rhoQ_.correctBoundaryConditions();
         solve();
+        if (correction_ == correctionType::shaped)
+        {
+            averageOverShapes(origin_, nReal);
+            shapeFresh_ = true;
+        }
+        farValid_ = false;
     }
-
-    if (correction_ == correctionType::shaped)
+    else if (sourcesFound)
     {
-        averageOverShapes(origin_, nReal);
+        // The charges changed: their far fields afresh (same mesh field)
+        farValid_ = false;
     }
 }
 
@@ -948,7 +954,7 @@ void Foam::meshPoisson::addNearField
     const label myStart,
     const UList<point>& cellCentres,
     UList<vector>& E
-) const
+)
 {
     const pointField& xs = xs_;
     const scalarField& qs = qs_;
@@ -964,18 +970,58 @@ void Foam::meshPoisson::addNearField
     };
     if (correction_ == correctionType::shaped)
     {
+        const scalar R = radius_;
+        const auto correction = [&](const label s, const vector& r, const scalar r2)
+        {
+            const scalar rm = std::sqrt(r2);
+            return (k*qs[s]*shapedCorrection(rm/R)/(r2*rm))*r;
+        };
+
+        // The far part: after a solve, or for charges that changed or
+        // moved between processors (the shapes' average then at their
+        // current positions in the same mesh field)
+        bool stale =
+            !farValid_ || farStart_ != myStart || farField_.size() != xT.size();
+        reduce(stale, orOp<bool>());
+        if (stale)
+        {
+            if (!shapeFresh_)
+            {
+                shapeWeights(xs_, origin_, nRealSources_);
+                averageOverShapes(origin_, nRealSources_);
+                shapeFresh_ = true;
+            }
+            farField_ = SubList<vector>(shapeField_, xT.size(), myStart);
+            forPairsWithinCutoff
+            (
+                xT, xs, 2*R, myStart,
+                [&](const label t, const label s, const vector& r, const scalar r2)
+                {
+                    if (r2 >= R*R)
+                    {
+                        farField_[t] += correction(s, r, r2);
+                    }
+                }
+            );
+            farStart_ = myStart;
+            farValid_ = true;
+        }
+
+        // The correction within R follows the charges
+        forAll(xT, t)
+        {
+            E[t] += farField_[t];
+        }
         forPairsWithinCutoff
         (
-            xT, xs, 2*radius_, myStart,
+            xT, xs, R, myStart,
             [&](const label t, const label s, const vector& r, const scalar r2)
             {
                 if (r2 == 0)
                 {
                     coincident(t);
                 }
-                const scalar rm = std::sqrt(r2);
-                E[t] +=
-                    (k*qs[s]*shapedCorrection(rm/radius_)/(r2*rm))*r;
+                E[t] += correction(s, r, r2);
             }
         );
     }

@@ -82,10 +82,10 @@ void Foam::MeshPoisson<CloudType>::calculate()
         this->combine(allC, allQ, cS, dummy, o);
     }
 
-    // Mesh field at the parcels: averaged over their shapes (shaped), or
-    // interpolated (their own tet coordinates: no search; at the centre
-    // within the cell while lazy tracking lets it drift); then the
-    // near-field correction
+    // Mesh field at the parcels: interpolated (cellCentroid: their own tet
+    // coordinates, no search; at the centre within the cell while lazy
+    // tracking lets it drift) or averaged over their shapes (shaped, in
+    // addNearField); then the near-field correction
     solver_->update(xS, qS, offset, cells);
     vectorField E(n);
     if (centroids)
@@ -102,7 +102,8 @@ void Foam::MeshPoisson<CloudType>::calculate()
     }
     else
     {
-        E = SubList<vector>(solver_->shapeField(), n, offset);
+        // All of it from addNearField
+        E = Zero;
     }
     solver_->addNearField
     (
