@@ -11,7 +11,7 @@ across the ends), independent of every rung. Printed: rms force error
 relative to the rms reference field, and the time per step relative to
 directCoulomb in the same run.
 
-    ductRungs.py [--case tutorials/chargedDuct] [--time latest] [--steps 4]
+    ductRungs.py [--case tutorials/chargedDuct] [--time latest] [--steps 20]
                  [--out table.md] [--work DIR]
 """
 import argparse
@@ -47,7 +47,7 @@ def main():
     ap.add_argument("--case", default=os.path.join(TOP, "tutorials",
                                                    "chargedDuct"))
     ap.add_argument("--time", default="latest")
-    ap.add_argument("--steps", type=int, default=4)
+    ap.add_argument("--steps", type=int, default=20)
     ap.add_argument("--out", default=None)
     ap.add_argument("--work", default=os.path.join(HERE, "runs", "duct"))
     a = ap.parse_args()
@@ -81,9 +81,9 @@ def main():
         ("directCoulomb (no walls)", "directCoulomb", "", MESH),
         ("meshPoisson cellCentroid (Eq. 31), rCut 6 mm", "meshPoisson",
          "correction cellCentroid; rCut 6e-3;", MESH),
-        ("meshPoisson shaped R 6 mm (tutorial)", "meshPoisson",
+        ("meshPoisson shaped R 6 mm", "meshPoisson",
          "radius 6e-3;", MESH),
-        ("meshPoisson shaped R 6 mm, solveInterval 20", "meshPoisson",
+        ("meshPoisson shaped R 6 mm, solveInterval 20 (tutorial)", "meshPoisson",
          "radius 6e-3; solveInterval 20;", MESH),
         ("meshPoisson 480x16x16, R 6 mm", "meshPoisson", "radius 6e-3;",
          fine),
