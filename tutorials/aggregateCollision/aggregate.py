@@ -32,6 +32,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.environ.get("CHARGEDFOAM_DIR", ""), "etc", "python"))
 import ellipsoidGap as eg  # noqa: E402
+from ellipsoids import mass, principal_moments, rotation  # noqa: E402
 from foamLagrangian import read_particle_history  # noqa: E402
 
 C = 100e-6                      # semi-minor axis [m]
@@ -68,7 +69,7 @@ def read_log(run):
 
 
 def pose(p, col, k):
-    R = eg.rotation(*(p[k, col[c]] for c in ("qw", "qx", "qy", "qz")))
+    R = rotation(*(p[k, col[c]] for c in ("qw", "qx", "qy", "qz")))
     x = np.array([p[k, col[c]] for c in ("x", "y", "z")])
     return x, R
 
@@ -86,9 +87,8 @@ def gaps(parts, col, k):
 def pair_energy(parts, col):
     """Energy of the pair (1, 2) at the end: relative translational and own
     rotational kinetic energy plus the point charges' Coulomb energy."""
-    m = RHO*4/3*np.pi*SEMI.prod()
-    inertia = m/5*np.array([SEMI[1]**2 + SEMI[2]**2, SEMI[0]**2 + SEMI[2]**2,
-                            SEMI[0]**2 + SEMI[1]**2])
+    m = mass(SEMI, RHO)
+    inertia = principal_moments(SEMI, m)
     x, v, rot, q = [], [], 0.0, []
     for p in parts[:2]:
         x.append(np.array([p[-1, col[c]] for c in ("x", "y", "z")]))

@@ -13,14 +13,6 @@ smallest semi-axis.
 import numpy as np
 
 
-def rotation(qw, qx, qy, qz):
-    """Body -> inertial rotation of the unit quaternion (w, x, y, z)."""
-    return np.array([
-        [1 - 2*(qy*qy + qz*qz), 2*(qx*qy - qz*qw), 2*(qx*qz + qy*qw)],
-        [2*(qx*qy + qz*qw), 1 - 2*(qx*qx + qz*qz), 2*(qy*qz - qx*qw)],
-        [2*(qx*qz - qy*qw), 2*(qy*qz + qx*qw), 1 - 2*(qx*qx + qy*qy)]])
-
-
 def _distance_to(x, c, R, s):
     """Signed first-order distance of points x (n x 3) to the ellipsoid."""
     y = (x - c) @ R                 # body frame

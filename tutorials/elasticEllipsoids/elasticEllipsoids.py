@@ -22,8 +22,9 @@ counts only if its velocities changed; its bodies must be apart at the end
 (Perram-Wertheim test, wall height), or the energy is not all kinetic."""
 import os, re, sys
 import numpy as np
-from foamLagrangian import read_field
-from ellipsoidGeometry import kinetic_energy, mass, perram_wertheim, rotation, shape_inverse
+from foamLagrangian import read_field, read_positions
+from ellipsoids import mass, principal_moments, rotation
+from ellipsoidGeometry import kinetic_energy, perram_wertheim, shape_inverse
 
 RATIOS = [1.5, 2, 5, 10]
 
@@ -42,14 +43,18 @@ def last_time(case):
 
 
 def analyse(case, rho=2500.0):
-    """Rows (kind, aspect ratio, E_after/E_before - 1, apart) per impact."""
+    """Rows (kind, aspect ratio, E_after/E_before - 1, hit, apart, dP, dL)
+    per impact: dP, dL the change of a pair's momentum and angular momentum
+    relative to m |U| and m |U| a (0 for wall impacts)."""
     before = read_parcels(case)
     lag = os.path.join(case, last_time(case), "lagrangian", "cloud")
     ids = read_field(os.path.join(lag, "origId")).astype(int)
     order = np.argsort(ids)
     f = lambda name: read_field(os.path.join(lag, name))[order]
     U, w, axes = f("U"), f("omegaBody"), f("semiAxes")
-    x = read_field_positions(lag)[order]
+    # Centres from the Cartesian positions file: the drift of lazy tracking
+    # is below the mesh tolerance, far below the separation test's margin
+    x = read_positions(os.path.join(lag, "positions"))[order]
     qv, qw = f("orientationEps"), f("orientationEta")
     q = np.column_stack([qw, qv])
     if len(U) != len(before):
@@ -66,10 +71,10 @@ def analyse(case, rho=2500.0):
         apart = perram_wertheim(shape_inverse(axes[i], q[i]), shape_inverse(axes[j], q[j]), x[j] - x[i]) > 1
         P0 = sum(momenta(before[m]["axes"], rho, before[m]["x"], before[m]["U"], before[m]["q"], before[m]["omega"]) for m in (i, j))
         P1 = sum(momenta(axes[m], rho, x[m], U[m], q[m], w[m]) for m in (i, j))
-        scale = momenta(before[i]["axes"], rho, before[i]["x"]*0, before[i]["U"], before[i]["q"], before[i]["omega"]*0)
-        dP = np.linalg.norm(P1[0] - P0[0])/np.linalg.norm(scale[0])
-        # angular momentum about the pair's centre of mass: scale m |U| a
-        dL = np.linalg.norm(P1[1] - P0[1])/(np.linalg.norm(scale[0])*axes[i][0])
+        pScale = mass(before[i]["axes"], rho)*np.linalg.norm(before[i]["U"])
+        dP = np.linalg.norm(P1[0] - P0[0])/pScale
+        # angular momentum about the origin (the pair feels no net force)
+        dL = np.linalg.norm(P1[1] - P0[1])/(pScale*axes[i][0])
         rows.append(("pair", axes[i][0]/axes[i][1], E1/E0 - 1, hit, apart, dP, dL))
     for m in range(2*nPairs, len(before)):
         E0 = kinetic_energy(before[m]["axes"], rho, before[m]["U"], before[m]["omega"])
@@ -80,22 +85,13 @@ def analyse(case, rho=2500.0):
     return rows
 
 
-def read_field_positions(lag):
-    """Centres from the 'positions' file (Cartesian, v1912 writes barycentric
-    'coordinates' too); the drift of lazy tracking is below the mesh
-    tolerance, far below the separation test's margin."""
-    from foamLagrangian import read_positions
-    return read_positions(os.path.join(lag, "positions"))
-
-
 def momenta(axes, rho, x, U, q, omega_body):
     """Linear momentum m U and angular momentum x x m U + Q I omega_body
     about the origin (with x relative to a point near the pair: the
     positions are written to 17 digits)."""
-    a, b, c = axes
     m = mass(axes, rho)
-    I = m/5*np.array([b*b + c*c, c*c + a*a, a*a + b*b])
-    return np.array([m*np.asarray(U), np.cross(x, m*np.asarray(U)) + rotation(q) @ (I*np.asarray(omega_body))])
+    I = principal_moments(axes, m)
+    return np.array([m*np.asarray(U), np.cross(x, m*np.asarray(U)) + rotation(*q) @ (I*np.asarray(omega_body))])
 
 
 def hertz_leapfrog_floor(N, phases=40):
@@ -151,7 +147,8 @@ if __name__ == "__main__":
         print(f"{fixed_step(sys.argv[2], int(sys.argv[3])):.17g}")
     elif sys.argv[1] == "--table":
         runs = [(int(a.split("=", 1)[0]), a.split("=", 1)[1]) for a in sys.argv[2:]]
-        sums = [(N, summary(analyse(c))) for N, c in runs]
+        rowsOf = {N: analyse(c) for N, c in runs}
+        sums = [(N, summary(rowsOf[N])) for N, _ in runs]
         print("max |E_after/E_before - 1| over the impacts of each kind and aspect ratio")
         print(f"{'impact':6} {'AR':>5} {'n':>3} " + " ".join(f"{'N=' + str(N):>10}" for N, _ in sums)
               + " " + " ".join(f"{'order ' + str(a) + '/' + str(b):>12}" for (a, _), (b, _) in zip(sums, sums[1:])))
@@ -172,8 +169,8 @@ if __name__ == "__main__":
         print(f"{'1D':6} {'floor':5} {'':3} "
               + " ".join(f"{hertz_leapfrog_floor(N):10.2e}" for N, _ in runs)
               + "   (velocity Verlet, head-on Hertz impact at deltaT = t_c/N)")
-        for N, c in runs:
-            pr = [r for r in analyse(c) if r[0] == "pair"]
+        for N, _ in runs:
+            pr = [r for r in rowsOf[N] if r[0] == "pair"]
             print(f"N={N}: pairs' momentum change max {max(r[5] for r in pr):.1e} of m|U|,"
                   f" angular momentum change max {max(r[6] for r in pr):.1e} of m|U|a")
     elif sys.argv[1] == "--summary":

@@ -1,21 +1,14 @@
 """Ellipsoid geometry for the elasticEllipsoids scripts, independent of the
-code under test: rotation of a unit quaternion, the Perram-Wertheim overlap
-test, masses and moments of inertia."""
+code under test: the shape matrix, the Perram-Wertheim overlap test and the
+kinetic energy (rotations, masses and moments from etc/python/ellipsoids)."""
 import numpy as np
-
-
-def rotation(q):
-    """Rotation matrix (body -> inertial) of the unit quaternion (w, x, y, z)."""
-    w, x, y, z = q
-    return np.array([
-        [1 - 2*(y*y + z*z), 2*(x*y - w*z), 2*(x*z + w*y)],
-        [2*(x*y + w*z), 1 - 2*(x*x + z*z), 2*(y*z - w*x)],
-        [2*(x*z - w*y), 2*(y*z + w*x), 1 - 2*(x*x + y*y)]])
+from ellipsoids import mass, principal_moments, rotation
 
 
 def shape_inverse(axes, q):
-    """S^-1 = Q diag(a^2, b^2, c^2) Q^T: x^T S x = 1 on the centred surface."""
-    Q = rotation(q)
+    """S^-1 = Q diag(a^2, b^2, c^2) Q^T: x^T S x = 1 on the centred surface;
+    q the unit quaternion (w, x, y, z)."""
+    Q = rotation(*q)
     return Q @ np.diag(np.asarray(axes)**2) @ Q.T
 
 
@@ -37,15 +30,8 @@ def perram_wertheim(M1, M2, r):
     return F(0.5*(a + b))
 
 
-def mass(axes, rho):
-    a, b, c = axes
-    return rho*4/3*np.pi*a*b*c
-
-
 def kinetic_energy(axes, rho, U, omega_body):
-    """Translational + rotational energy; principal moments
-    m/5 (b^2 + c^2, c^2 + a^2, a^2 + b^2) about the body axes."""
-    a, b, c = axes
+    """Translational + rotational energy."""
     m = mass(axes, rho)
-    I = m/5*np.array([b*b + c*c, c*c + a*a, a*a + b*b])
+    I = principal_moments(axes, m)
     return 0.5*m*np.dot(U, U) + 0.5*np.dot(I, np.asarray(omega_body)**2)

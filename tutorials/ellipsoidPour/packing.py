@@ -20,16 +20,8 @@ import numpy as np
 
 # etc/python of the project (on PYTHONPATH after etc/bashrc)
 sys.path.insert(0, os.path.join(os.environ.get("CHARGEDFOAM_DIR", ""), "etc", "python"))
+from ellipsoids import rotation  # noqa: E402
 from foamLagrangian import read_field, read_positions  # noqa: E402
-
-
-def rotation(eta, eps):
-    """Rotation tensors (body -> inertial) of unit quaternions (eta, eps)."""
-    w, x, y, z = eta, eps[:, 0], eps[:, 1], eps[:, 2]
-    return np.stack([
-        np.stack([1 - 2*(y*y + z*z), 2*(x*y - w*z), 2*(x*z + w*y)], -1),
-        np.stack([2*(x*y + w*z), 1 - 2*(x*x + z*z), 2*(y*z - w*x)], -1),
-        np.stack([2*(x*z - w*y), 2*(y*z + w*x), 1 - 2*(x*x + y*y)], -1)], -2)
 
 
 def main():
@@ -69,7 +61,7 @@ def main():
     if args.state_only:
         return 0 if ok else 1
 
-    R = rotation(eta, eps)
+    R = rotation(eta, *eps.T)
     top = (x[:, 2] + s.max(1)).max()
     lo = np.array([1e-3, 1e-3, 1e-3])
     hi = np.array([11e-3, 11e-3, top - 2e-3])

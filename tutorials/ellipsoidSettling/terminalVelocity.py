@@ -25,6 +25,7 @@ import re
 import numpy as np
 from scipy.optimize import brentq
 
+from ellipsoids import rotation
 from foamLagrangian import read_field, read_positions
 
 
@@ -58,14 +59,6 @@ def cdre_hs(Re, phi, phi_perp):
 def cdre_sn(Re):
     """Cd Re of OpenFOAM's sphereDrag."""
     return 0.424*Re if Re > 1000 else 24*(1 + Re**(2/3)/6)
-
-
-def rotation(w, x, y, z):
-    """x_in = R x_body for the unit quaternion (w, x, y, z)."""
-    return np.array([
-        [1 - 2*(y*y + z*z), 2*(x*y - w*z), 2*(x*z + w*y)],
-        [2*(x*y + w*z), 1 - 2*(x*x + z*z), 2*(y*z - w*x)],
-        [2*(x*z - w*y), 2*(y*z + w*x), 1 - 2*(x*x + y*y)]])
 
 
 ap = argparse.ArgumentParser(description=__doc__)

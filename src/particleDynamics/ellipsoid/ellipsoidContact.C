@@ -970,7 +970,9 @@ Foam::ellipsoidContact::reducedRadiusGradient
     const scalar G1 = t1 & G, G2 = t2 & G;
     const vector w = ((H22*G1 - H12*G2)/det)*t1 + ((H11*G2 - H12*G1)/det)*t2;
 
-    const scalar R2 = sqr(r.reducedRadius);
+    // R = 1/(K1 + K2) at the common-normal points (the contact's
+    // reducedRadius, here from the same K(n) as its gradient)
+    const scalar R2 = 1/sqr(K1 + K2);
     const vector r1 = r.x1 - e1.centre();
     const vector r2 = r.x2 - e2.centre();
     d.centre1 = R2*w;
