@@ -6,6 +6,7 @@
 #include "ElectrostaticsModel.H"
 #include "TriboChargingModel.H"
 #include "EllipsoidCollision.H"
+#include "SceneCheck.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -28,6 +29,15 @@ void Foam::ChargedCloud<CloudType>::setModels()
             this->subModelProperties(),
             *this
         ).ptr()
+    );
+
+    sceneCheck_.reset
+    (
+        new SceneCheck<ChargedCloud<CloudType>>
+        (
+            this->particleProperties(),
+            *this
+        )
     );
 
     // Contact charging acts on the contacts the collision model lists
@@ -231,6 +241,11 @@ void Foam::ChargedCloud<CloudType>::evolve()
         td.part() = parcelType::trackingData::tpVelocityHalfStep;
 
         this->solve(*this, td);
+
+        if (sceneCheck_.valid())
+        {
+            sceneCheck_->checkIfDue();
+        }
     }
 }
 
