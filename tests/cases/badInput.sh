@@ -4,7 +4,12 @@
 # missing Gamma, a non-positive cutoff distance, charging without
 # ellipsoidCollision; lazy-tracking tolerance, log interval and neighbour
 # skin out of range; particle permittivity, the applied field's type and
-# the near field's entries.
+# the near field's entries; stiffnessRatio outside (0, 1] without
+# ellipsoidCollision; the dipoles' maxIter (a label >= 1); non-finite
+# parcel U, omega, eulerAngles; NaN p3m rCut, a non-bool fastErfc, Ne < 0;
+# the BEM solver's maxPreconditionerPatches, directOutputMax, nearFactor;
+# non-finite carrierProperties (rho, mu, U). Non-finite values come from
+# #eval with FOAM_SIGFPE=false (the reader refuses nan and inf).
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -14,10 +19,11 @@ copyCase triboSingleContact "$work/tribo"
 cd "$work/tribo" || exit 1
 run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
 base=base
+file=constant/cloudProperties
 
 # badCase <name> <python re.sub pattern> <replacement> <expected message regex>
 #     [<pattern> <replacement> ...]
-# (a copy of $work/$base with one change, or several)
+# (a copy of $work/$base with one change, or several, in its $file)
 badCase()
 {
     local name="$1" pattern="$2" repl="$3" expect="$4" dir="$work/$1"
@@ -26,11 +32,11 @@ badCase()
     cp -r "$work/$base" "$dir"
     (
         cd "$dir" || exit 1
-        $PY - "$pattern" "$repl" "$@" <<'PYEOF' || exit 1
+        $PY - "$file" "$pattern" "$repl" "$@" <<'PYEOF' || exit 1
 import re, sys
-p = "constant/cloudProperties"
+p = sys.argv[1]
 s = open(p).read()
-for pattern, repl in zip(sys.argv[1::2], sys.argv[2::2]):
+for pattern, repl in zip(sys.argv[2::2], sys.argv[3::2]):
     s, n = re.subn(pattern, repl, s, count=1)
     if n != 1:
         sys.exit("pattern not found: " + pattern)
@@ -104,6 +110,66 @@ badCase unknownNeighbours 'epsilonR +1;' 'epsilonR 1; nearField { type bem; neig
     'Entry neighbours dipoles in .* is not one of: multipoles pointCharges'
 badCase zeroMeshCache 'epsilonR +1;' 'epsilonR 1; nearField { type bem; meshCache 0; }' \
     'Entry meshCache = 0 in .* is out of range: > 0'
+
+# Reduced stiffness is checked where constantProperties is read, whatever
+# the collision model (here none: only the Coulomb contact correction)
+badCase negativeStiffnessRatio 'rho0 +1000;' 'rho0 1000; stiffnessRatio -0.5;' \
+    'Entry stiffnessRatio \(chi = E_R/E_O, Ruan Eq. 44\) = -0.5 in .* is out of range \(0, 1\]'
+badCase zeroDipoleMaxIter 'epsilonR +1;' 'epsilonR 1; nearField { type inducedDipole; maxIter 0; }' \
+    'Entry maxIter = 0 in .*nearField is out of range: >= 1'
+# (a label: 0.5 is OpenFOAM's token error at the entry, not 0 iterations)
+badCase fractionalDipoleMaxIter 'epsilonR +1;' 'epsilonR 1; nearField { type inducedDipole; maxIter 0.5; }' \
+    'directCoulombCoeffs\.nearField\.maxIter at line [0-9]+'
+
+# Non-finite values cannot be typed (the reader refuses nan, inf, 1e400)
+# but an expression gives them (#eval, floating-point traps off)
+FOAM_SIGFPE=false badCase infiniteParcelVelocity \
+    'U \(0 0 0\); d 1e-4; rho 1000; q  1e-12;' \
+    'U (#eval{1e300*1e300} 0 0); d 1e-4; rho 1000; q  1e-12;' \
+    'Entry U of parcel 0 .* out of range \(\(inf 0 0\)\): all components must be finite'
+FOAM_SIGFPE=false badCase nanParcelOmega \
+    'd 1e-4; rho 1000; q -1e-12;' 'd 1e-4; rho 1000; q -1e-12; omega (0 #eval{sqrt(-1)} 0);' \
+    'Entry omega of parcel 1 .* out of range \(\(0 -?nan 0\)\): all components must be finite'
+FOAM_SIGFPE=false badCase infiniteEulerAngles \
+    'd 1e-4; rho 1000; q  1e-12;' 'd 1e-4; rho 1000; q  1e-12; eulerAngles (0 0 #eval{-1e300*1e300});' \
+    'Entry eulerAngles of parcel 0 .* out of range \(\(0 0 -inf\)\): all components must be finite'
+
+# Tri-periodic kernels (on this non-periodic box: a warning only)
+FOAM_SIGFPE=false badCase nanP3mCutoff 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel periodic; periodicCoeffs { method p3m; rCut #eval{sqrt(-1)}; }' \
+    "Entry 'rCut' = -?nan is out of range \[0, "
+badCase numericFastErfc 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel periodic; periodicCoeffs { method p3m; fastErfc 2; }' \
+    "Entry 'fastErfc' = 2 is out of range: auto, or a bool"
+badCase negativePseudoParticleNe 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel periodic; periodicCoeffs { method pseudoParticle; Ne -1; }' \
+    "Entry 'Ne' = -1 is out of range \[0, 1000\]"
+
+# BEM solver controls (read as in the bemElectrostatics utility)
+badCase negativePreconditionerPatches 'epsilonR +1;' \
+    'epsilonR 1; nearField { type bem; solver { maxPreconditionerPatches -1; } }' \
+    'Entry maxPreconditionerPatches = -1 in .*solver is out of range: >= 0'
+badCase negativeDirectOutputMax 'epsilonR +1;' \
+    'epsilonR 1; nearField { type bem; solver { directOutputMax -1; } }' \
+    'Entry directOutputMax = -1 in .*solver is out of range: >= 0'
+FOAM_SIGFPE=false badCase infiniteNearFactor 'epsilonR +1;' \
+    'epsilonR 1; nearField { type bem; solver { nearFactor #eval{1e300*1e300}; } }' \
+    'Entry nearFactor = inf in .*solver is out of range: it must be finite and >= 0'
+
+# chargedParticleFoam's carrier medium, constant/carrierProperties
+cp -r "$work/base" "$work/carrier"
+printf '%s\n' \
+    'FoamFile { version 2.0; format ascii; class dictionary; object carrierProperties; }' \
+    'rho 0;' 'mu  0;' 'U   (0 0 0);' > "$work/carrier/constant/carrierProperties"
+base=carrier
+file=constant/carrierProperties
+FOAM_SIGFPE=false badCase nanCarrierDensity 'rho 0;' 'rho #eval{sqrt(-1)};' \
+    'Entry rho \(carrier density \[kg/m3\]\) = -?nan in .* is out of range: it must be finite and >= 0'
+FOAM_SIGFPE=false badCase infiniteCarrierViscosity 'mu  0;' 'mu #eval{1e300*1e300};' \
+    'Entry mu \(carrier dynamic viscosity \[Pa s\]\) = inf in .* is out of range: it must be finite and >= 0'
+FOAM_SIGFPE=false badCase infiniteCarrierVelocity 'U   \(0 0 0\);' 'U (0 #eval{1e300*1e300} 0);' \
+    'Entry U \(carrier velocity \[m/s\]\) = \(0 inf 0\) in .* is out of range: all components must be finite'
+file=constant/cloudProperties
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

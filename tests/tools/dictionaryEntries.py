@@ -88,7 +88,8 @@ REVIEWED = {
     ('EllipsoidCollision.C', 'key'):
         ([], 'readPositive(dict, key): helper, its calls are scanned'),
     ('InducedDipoleNearField.C', 'key'):
-        ([], 'readPositive(key, default): helper, its calls are scanned'),
+        ([], 'readPositive/readLabel(key, default, ...): helpers, calls'
+             ' scanned'),
     ('ExplicitParcelInjection.C', 'key'):
         ([], 'readParcelScalar(dict, i, key, ...): helper, calls scanned'),
     ('RaseraTriboCharging.C', 'key'):

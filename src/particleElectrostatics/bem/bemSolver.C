@@ -114,10 +114,30 @@ Foam::bemSolverControls Foam::bemSolverControls::read
             << c.fmmTheta << " in (0, 1) and fmmLeafSize " << c.fmmLeafSize
             << " >= 1" << exit(FatalIOError);
     }
-    if (!(c.nearFactor >= 0))
+    if (!(c.nearFactor >= 0) || !std::isfinite(c.nearFactor))
     {
         FatalIOErrorInFunction(dict)
-            << "nearFactor " << c.nearFactor << " must be >= 0"
+            << "Entry nearFactor = " << c.nearFactor << " in "
+            << dict.name().c_str() << " is out of range: it must be finite"
+            << " and >= 0 (0: no near quadrature)" << exit(FatalIOError);
+    }
+    // Patch counts compared with a particle mesh's or the problem's size:
+    // maxPreconditionerPatches 0 gives no particle a preconditioner block,
+    // directOutputMax 0 evaluates the output by the fast sums at any size
+    if (c.maxPreconditionerPatches < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry maxPreconditionerPatches = "
+            << c.maxPreconditionerPatches << " in " << dict.name().c_str()
+            << " is out of range: >= 0 (patches of the largest particle mesh"
+            << " that gets a preconditioner block)" << exit(FatalIOError);
+    }
+    if (c.directOutputMax < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry directOutputMax = " << c.directOutputMax << " in "
+            << dict.name().c_str() << " is out of range: >= 0 (patches up to"
+            << " which forces, torques and energy use direct sums)"
             << exit(FatalIOError);
     }
     return c;

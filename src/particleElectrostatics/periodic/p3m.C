@@ -5,6 +5,8 @@
 #include "p3m.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "Switch.H"
+#include "OStringStream.H"
 
 #include <fftw3.h>
 #include <chrono>
@@ -94,6 +96,49 @@ inline scalar erfcFast(const scalar x, const scalar expm2)
           + t*(-1.453152027 + t*1.061405429))))*expm2;
 }
 
+
+// Entry fastErfc: -1 for auto, 0 or 1 for a bool (a word of OpenFOAM's
+// Switch: true/false, on/off, yes/no, ...; or the label 0 or 1); anything
+// else is an error naming the entry and the allowed values
+int readFastErfc(const Foam::dictionary& dict)
+{
+    if (!dict.found("fastErfc"))
+    {
+        return -1;
+    }
+    const Foam::ITstream& is = dict.lookup("fastErfc");
+    if (is.size() == 1)
+    {
+        const Foam::token& t = is[0];
+        if (t.isWord())
+        {
+            if (t.wordToken() == "auto")
+            {
+                return -1;
+            }
+            const Foam::Switch sw(t.wordToken(), true);
+            if (sw.valid())
+            {
+                return bool(sw) ? 1 : 0;
+            }
+        }
+        else if (t.isLabel() && (t.labelToken() == 0 || t.labelToken() == 1))
+        {
+            return int(t.labelToken());
+        }
+    }
+    Foam::OStringStream value;
+    forAll(is, i)
+    {
+        value << (i ? " " : "") << is[i];
+    }
+    FatalIOErrorInFunction(dict)
+        << "Entry 'fastErfc' = " << value.str().c_str() << " is out of"
+        << " range: auto, or a bool (true/false, on/off, yes/no, 1/0)"
+        << Foam::exit(Foam::FatalIOError);
+    return -1;
+}
+
 } // End anonymous namespace
 
 
@@ -149,11 +194,7 @@ Foam::p3m::p3m(const dictionary& dict)
     rCutUser_(dict.getOrDefault<scalar>("rCut", 0)),
     alphaUser_(dict.getOrDefault<scalar>("alpha", 0)),
     meshUser_{0, 0, 0},
-    fastErfcUser_
-    (
-        (dict.getOrDefault<word>("fastErfc", "auto") == "auto") ? -1
-      : (dict.getOrDefault<bool>("fastErfc", false) ? 1 : 0)
-    ),
+    fastErfcUser_(readFastErfc(dict)),
     ready_(false),
     N0_(-1),
     Q20_(-1),
@@ -166,7 +207,7 @@ Foam::p3m::p3m(const dictionary& dict)
     timeReal_(0),
     timeKspace_(0)
 {
-    if (rCutUser_ < 0 || rCutUser_ > 0.5*cmptMin(L_))
+    if (!(rCutUser_ >= 0 && rCutUser_ <= 0.5*cmptMin(L_)))
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'rCut' = " << rCutUser_ << " is out of range [0, "

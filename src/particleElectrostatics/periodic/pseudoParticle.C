@@ -38,7 +38,7 @@ Foam::pseudoParticle::pseudoParticle
     if (Ne < 0 || Ne > 1000)
     {
         FatalErrorInFunction
-            << "Ne = " << Ne << " is out of range [1, 1000] (0: optimal)"
+            << "Ne = " << Ne << " is out of range [0, 1000] (0: optimal)"
             << exit(FatalError);
     }
     if (Ne > 0 && 2*Nv + 1 > (2*Nper - 1)*Ne - 1)

@@ -1295,14 +1295,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     (
         this->coeffDict().template lookupOrDefault<scalar>("deltaBlRatio", 0.05)
     ),
-    chi_
-    (
-        owner.constProps().dict().template lookupOrDefault<scalar>
-        (
-            "stiffnessRatio",
-            1
-        )
-    ),
+    chi_(owner.constProps().stiffnessRatio()),
     nBufferWarnings_(0),
     nBufferWarningsTotal_(0),
     resolutionSteps_
@@ -1376,12 +1369,6 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     const dictionary& coeffs = this->coeffDict();
     const dictionary& props = owner.constProps().dict();
 
-    if (!(chi_ > 0 && chi_ <= 1))
-    {
-        FatalIOErrorInFunction(props)
-            << "Entry stiffnessRatio (chi = E_R/E_O, Ruan Eq. 44) = " << chi_
-            << " is out of range (0, 1]" << exit(FatalIOError);
-    }
     if (this->coeffDict().found("deltaBl") && !(deltaBl_ >= 0))
     {
         FatalIOErrorInFunction(this->coeffDict())

@@ -140,15 +140,7 @@ Foam::DirectCoulomb<CloudType>::DirectCoulomb
     coulomb_(readEpsilonR(this->coeffDict())),
     contactCorrection_
     (
-        Foam::pow
-        (
-            owner.constProps().dict().template lookupOrDefault<scalar>
-            (
-                "stiffnessRatio",
-                1
-            ),
-            0.4
-        )
+        Foam::pow(owner.constProps().stiffnessRatio(), 0.4)
       - 1
     )
 {}

@@ -114,12 +114,7 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
     kernelDict_(kernelDict(this->coeffDict(), owner)),
     kernel_(periodicElectrostatics::New(kernelDict_))
 {
-    const scalar chi =
-        owner.constProps().dict().template lookupOrDefault<scalar>
-        (
-            "stiffnessRatio",
-            1
-        );
+    const scalar chi = owner.constProps().stiffnessRatio();
     if (chi != 1)
     {
         FatalIOErrorInFunction(owner.constProps().dict())

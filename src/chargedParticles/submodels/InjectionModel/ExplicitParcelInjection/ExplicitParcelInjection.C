@@ -54,6 +54,31 @@ Foam::scalar Foam::ExplicitParcelInjection<CloudType>::readParcelScalar
 
 
 template<class CloudType>
+void Foam::ExplicitParcelInjection<CloudType>::checkFinite
+(
+    const dictionary& dict,
+    const label i,
+    const word& key,
+    const vector& value
+) const
+{
+    if
+    (
+        !std::isfinite(value.x())
+     || !std::isfinite(value.y())
+     || !std::isfinite(value.z())
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " of parcel " << i << " in "
+            << this->coeffDict().name().c_str() << "/parcels is out of"
+            << " range (" << value << "): all components must be finite"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
 Foam::quaternion Foam::ExplicitParcelInjection<CloudType>::readOrientation
 (
     const dictionary& pd,
@@ -72,6 +97,7 @@ Foam::quaternion Foam::ExplicitParcelInjection<CloudType>::readOrientation
     if (euler)
     {
         const vector angles(pd.get<vector>("eulerAngles"));
+        checkFinite(pd, i, "eulerAngles", angles);
         const scalar deg = constant::mathematical::pi/180;
         return rigidBodyRotation::fromEulerAngles
         (
@@ -129,6 +155,7 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
                 << exit(FatalIOError);
         }
         U_[i] = pd.lookupOrDefault<vector>("U", Zero);
+        checkFinite(pd, i, "U", U_[i]);
 
         // Size: a sphere's diameter or an ellipsoid's semi-axes
         semiAxes_[i] = Zero;
@@ -160,6 +187,7 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
         }
         orientation_[i] = readOrientation(pd, i);
         omegaBody_[i] = pd.lookupOrDefault<vector>("omega", Zero);
+        checkFinite(pd, i, "omega", omegaBody_[i]);
 
         rho_[i] = readParcelScalar(pd, i, "rho", true, &rho0);
         q_[i] = readParcelScalar(pd, i, "q", false);

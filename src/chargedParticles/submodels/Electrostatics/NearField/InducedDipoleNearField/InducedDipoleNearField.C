@@ -59,6 +59,27 @@ Foam::scalar Foam::InducedDipoleNearField<CloudType>::readPositive
 }
 
 
+template<class CloudType>
+Foam::label Foam::InducedDipoleNearField<CloudType>::readLabel
+(
+    const word& key,
+    const label deflt,
+    const label lo
+) const
+{
+    // A label: a count given as 0.5 is an error, not truncated to 0
+    const label v = this->dict().template lookupOrDefault<label>(key, deflt);
+    if (v < lo)
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry " << key << " = " << v << " in "
+            << this->dict().name().c_str() << " is out of range: >= " << lo
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -71,18 +92,10 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
     NearFieldModel<CloudType>(dict, owner),
     rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
     tolerance_(readPositive("tolerance", 1e-8)),
-    maxIter_(label(readPositive("maxIter", 500))),
+    maxIter_(readLabel("maxIter", 500, 1)),
     contactWeight_
     (
-        Foam::pow
-        (
-            owner.constProps().dict().template lookupOrDefault<scalar>
-            (
-                "stiffnessRatio",
-                1
-            ),
-            0.4
-        )
+        Foam::pow(owner.constProps().stiffnessRatio(), 0.4)
     ),
     dipoles_(1, tolerance_, maxIter_),
     energy_(0),
