@@ -155,6 +155,24 @@ check sceneCheck.idleWarned "(directCoulomb, nothing charged)" \
 n=$(grep -c "^Scene check of" log.solver)
 check sceneCheck.recheck "(recheckInterval 2 over 6 steps: $n checks, 3 expected)" test "$n" -eq 3
 
+#    The same pour with like charges, contact (a reduction in the step
+#    count) and the Coulomb-collision estimate (a volume sum), on 2
+#    processors: the same summary as serial, and no processor left waiting
+copyCase ellipsoidPour "$work/pourSerial"
+cd "$work/pourSerial" || exit 1
+$PY makeParcels.py 50 > /dev/null
+sed -i -E 's/ q 0; \}/ q 1e-13; }/' constant/parcels
+sed -i -E 's/electrostaticsModel +none;/electrostaticsModel directCoulomb;/' constant/cloudProperties
+setEndTime 2e-4
+cp -r "$work/pourSerial" "$work/pourParallel"
+run blockMesh blockMesh && run solver chargedParticleFoam || fail "sceneCheck.pourSerial (solver failed)"
+cd "$work/pourParallel" || exit 1
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run parallel timeout 300 mpirun -np 2 chargedParticleFoam -parallel \
+    || fail "sceneCheck.pourParallel (run failed or hung, see $work/pourParallel/log.parallel)"
+check sceneCheck.pourParallel "(like charges with contact on 2 processors: summary = serial)" \
+    bash -c "grep -q 'Coulomb-collision step' log.parallel && diff <(sed -n '/^Scene check of/,/^\$/p' '$work/pourSerial/log.solver') <(sed -n '/^Scene check of/,/^\$/p' log.parallel) > /dev/null"
+
 # 6. Bad entries
 mkdir -p "$work/bad"
 for bad in "recheckInterval -1" "breakdownField 0"

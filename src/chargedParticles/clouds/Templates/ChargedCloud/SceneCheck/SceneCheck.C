@@ -252,6 +252,11 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     scalarField dWall(sceneMeasures::distanceToFaces(mesh, wallFaces, sample));
     Pstream::listCombineGather(dWall, minEqOp<scalar>());
 
+    // Collective to the end: the collision model's sub-cycles (a
+    // reduction) and the domain volume, on every processor
+    const label nSub = max(label(1), cloud_.collision().nSubCycles());
+    const scalar vol = gSum(mesh.cellVolumes());
+
     DynamicList<string> warnings;
     if (!Pstream::master())
     {
@@ -280,19 +285,12 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     // of a mono-charged cloud (Eqs. 21-23 with the agitation of Eq. 25 or
     // the measured one, the larger)
     const scalar deltaT = mesh.time().deltaTValue();
-    const label nSub = max(label(1), cloud_.collision().nSubCycles());
     const scalar dtStep = deltaT/nSub;
     scalar dtCoulomb = GREAT;
     const bool monoCharged =
         nCharged > 1 && (nPositive == 0 || nNegative == 0);
     if (monoCharged && farType != "periodic")
     {
-        scalar vol = 0;
-        for (const scalar v : mesh.cellVolumes())
-        {
-            vol += v;
-        }
-        reduce(vol, sumOp<scalar>());
         scalar sumU2 = 0;
         vector sumU(Zero);
         for (const vector& u : U)
