@@ -92,12 +92,102 @@ def summary(case):
         "qSat": qSat,
         "time": float(ts[-1]),
         "parcels": len(last),
+        "parcels0": len(q[0]),
         "total": last.sum(),
         "mean": last.mean()/qSat,
         "std": last.std()/qSat,
         "balance": np.abs(b[:, 3]).max()/max(np.abs(b[:, 1]).max(), 1e-300),
         "wallContacts": b[:, 5].sum(),
     }
+
+
+def report(s, name="chargedDuct"):
+    """Print the summary s of summary() (results.txt)."""
+    print(f"{name}: {s['parcels']} parcels at t = {s['time']:g} s "
+          f"({s['parcels0']} at the first write)")
+    print(f"  q_sat = eps0 |Gamma| S = {s['qSat']:.4g} C per particle")
+    print(f"  total parcel charge {s['total']:.4g} C; mean q/q_sat = "
+          f"{s['mean']:.4f}, std {s['std']:.4f}")
+    print(f"  charge balance (parcels + walls) / max |parcel charge| <= "
+          f"{s['balance']:.1e}; charging wall contacts {s['wallContacts']:.0f}")
+    print(f"  parcel velocity: mean {np.array2string(s['U'], precision=4)} m/s,"
+          f" std of U_x {s['UxStd']:.4f} m/s")
+
+
+def report_field(maxE, Ep):
+    """Print the largest |E| of the mesh and the mean |E| at the parcels Ep
+    (of mid_plane_field())."""
+    print(f"  field: max |E| on the mesh {maxE:.4g} V/m; "
+          f"at the parcels mean {Ep.mean():.4g}"
+          f" V/m (breakdown of air ~3e6 V/m)")
+
+
+def plot_build_up(ax, b, ts, q, N, qSat):
+    """Charge build-up on ax: minus the parcel charge and the wall charge
+    per N q_sat (chargeBalance.dat b), minus the mean parcel charge per q_sat
+    at the written times ts (charges q)."""
+    ax.plot(b[:, 0], -b[:, 1]/(N*qSat), label="-(parcel charge)/(N q_sat)")
+    ax.plot(b[:, 0], b[:, 2]/(N*qSat), "--", label="wall charge/(N q_sat)")
+    tq = [float(t) for t in ts]
+    ax.plot(tq, [-x.mean()/qSat for x in q], "o", label="-mean q/q_sat")
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("charge / saturation")
+
+
+def plot_charge_balance(ax, b, unit=1e-9, unitName="nC"):
+    """Signed charges of chargeBalance.dat b on ax: the parcels, the walls
+    and their sum with the outflow (zero: contact charging conserves
+    charge)."""
+    ax.plot(b[:, 0], b[:, 1]/unit, label="particles")
+    ax.plot(b[:, 0], b[:, 2]/unit, "--", label="walls (grounded)")
+    ax.plot(b[:, 0], b[:, 3]/unit, ":", color="k",
+            label=f"particles + walls + outflow\n(|sum| <= "
+                  f"{np.abs(b[:, 3]).max():.0e} C)")
+    ax.axhline(0, color="0.8", lw=0.5, zorder=0)
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel(f"charge [{unitName}]")
+
+
+def plot_distribution(ax, ts, q, qSat, which=None, bins=40):
+    """Histograms of the parcel charges per q_sat on ax, at the written
+    times of the indices which (default: a third, two thirds and the end);
+    returns the bin edges (to add other runs)."""
+    bins = np.linspace(min(x.min() for x in q)/qSat,
+                       max(0, max(x.max() for x in q)/qSat), bins + 1)
+    if which is None:
+        which = sorted({len(ts)//3, 2*len(ts)//3, len(ts) - 1})
+    for i in which:
+        ax.hist(q[i]/qSat, bins=bins, histtype="step",
+                label=f"t = {ts[i]} s")
+    ax.set_xlabel("q / q_sat")
+    ax.set_ylabel("parcels")
+    return bins
+
+
+def mid_plane_field(case, t, par):
+    """|E| of the mesh field at time t in the duct's mid-plane z = W/2 (the
+    mean of the two cell layers next to it, (NY, NX)), the largest |E| of
+    the mesh, and |E| at the parcels; None if t has no E."""
+    Epath = os.path.join(case, t, "E")
+    if not os.path.exists(Epath):
+        return None
+    NX, NY, NZ = par["cells"]
+    E = read_internal_field(Epath)
+    magE = np.linalg.norm(E, axis=1).reshape(NZ, NY, NX)
+    mid = 0.5*(magE[NZ//2 - 1] + magE[NZ//2])
+    Ep = read_field(os.path.join(case, t, "lagrangian", "cloud",
+                                 "E")).reshape(-1, 3)
+    return mid, np.abs(magE).max(), np.linalg.norm(Ep, axis=1)
+
+
+def plot_field(fig, ax, mid, par):
+    """The mid-plane |E| of mid_plane_field() on ax, with a colour bar."""
+    L, W = par["size"][0], par["size"][1]
+    im = ax.imshow(mid, origin="lower", extent=(0, L, 0, W),
+                   aspect="auto", cmap="viridis")
+    fig.colorbar(im, ax=ax, label="|E| [V/m]")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
 
 
 def main():
@@ -107,27 +197,11 @@ def main():
     par = case_params(case)
     Q_SAT = s["qSat"]
     N = s["parcels"]
-    NX, NY, NZ = par["cells"]
-    L, W = par["size"][0], par["size"][1]
-
-    print(f"chargedDuct: {s['parcels']} parcels at t = {s['time']:g} s "
-          f"({len(q[0])} at the first write)")
-    print(f"  q_sat = eps0 |Gamma| S = {Q_SAT:.4g} C per particle")
-    print(f"  total parcel charge {s['total']:.4g} C; mean q/q_sat = "
-          f"{s['mean']:.4f}, std {s['std']:.4f}")
-    print(f"  charge balance (parcels + walls) / max |parcel charge| <= "
-          f"{s['balance']:.1e}; charging wall contacts {s['wallContacts']:.0f}")
-    print(f"  parcel velocity: mean {np.array2string(s['U'], precision=4)} m/s,"
-          f" std of U_x {s['UxStd']:.4f} m/s")
+    report(s)
 
     # Charge build-up
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(b[:, 0], -b[:, 1]/(N*Q_SAT), label="-(parcel charge)/(N q_sat)")
-    ax.plot(b[:, 0], b[:, 2]/(N*Q_SAT), "--", label="wall charge/(N q_sat)")
-    tq = [float(t) for t in ts]
-    ax.plot(tq, [-x.mean()/Q_SAT for x in q], "o", label="-mean q/q_sat")
-    ax.set_xlabel("t [s]")
-    ax.set_ylabel("charge / saturation")
+    plot_build_up(ax, b, ts, q, N, Q_SAT)
     ax.set_title("PTFE ellipsoids charging on steel walls")
     ax.legend()
     fig.tight_layout()
@@ -135,11 +209,7 @@ def main():
 
     # Charge distribution at a few times (and of the other run)
     fig, ax = plt.subplots(figsize=(6, 4))
-    bins = np.linspace(min(x.min() for x in q)/Q_SAT,
-                       max(0, max(x.max() for x in q)/Q_SAT), 41)
-    for i in sorted({len(ts)//3, 2*len(ts)//3, len(ts) - 1}):
-        ax.hist(q[i]/Q_SAT, bins=bins, histtype="step",
-                label=f"t = {ts[i]} s")
+    bins = plot_distribution(ax, ts, q, Q_SAT)
     if other:
         _, qo, _, so = summary(other)
         ax.hist(qo[-1]/Q_SAT, bins=bins, histtype="step", ls="--",
@@ -154,32 +224,20 @@ def main():
               f" {so['UxStd']:.4f} m/s; difference of the mean U_x"
               f" {abs(so['U'][0] - s['U'][0]):.4f} m/s (standard error"
               f" {np.hypot(s['UxStd'], so['UxStd'])/np.sqrt(s['parcels']):.4f})")
-    ax.set_xlabel("q / q_sat")
-    ax.set_ylabel("parcels")
     ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(case, "chargeDistribution.png"), dpi=120)
 
     # Mesh field in the mid-plane z = W/2 (the cells next to it)
-    Epath = os.path.join(case, ts[-1], "E")
-    if os.path.exists(Epath):
-        E = read_internal_field(Epath)
-        magE = np.linalg.norm(E, axis=1).reshape(NZ, NY, NX)
-        mid = 0.5*(magE[NZ//2 - 1] + magE[NZ//2])
+    field = mid_plane_field(case, ts[-1], par)
+    if field:
+        mid, maxE, Ep = field
         fig, ax = plt.subplots(figsize=(9, 2.4))
-        im = ax.imshow(mid, origin="lower", extent=(0, L, 0, W),
-                       aspect="auto", cmap="viridis")
-        fig.colorbar(im, ax=ax, label="|E| [V/m]")
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
+        plot_field(fig, ax, mid, par)
         ax.set_title(f"mesh far field |E|, mid-plane, t = {ts[-1]} s")
         fig.tight_layout()
         fig.savefig(os.path.join(case, "field.png"), dpi=120)
-        Ep = read_field(os.path.join(case, ts[-1], "lagrangian", "cloud",
-                                     "E")).reshape(-1, 3)
-        print(f"  field: max |E| on the mesh {np.abs(magE).max():.4g} V/m; "
-              f"at the parcels mean {np.linalg.norm(Ep, axis=1).mean():.4g}"
-              f" V/m (breakdown of air ~3e6 V/m)")
+        report_field(maxE, Ep)
 
 
 if __name__ == "__main__":

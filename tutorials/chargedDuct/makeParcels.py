@@ -1,19 +1,20 @@
 #!/usr/bin/python3
-"""Write constant/parcels for the chargedDuct tutorial: N PTFE ellipsoids
-(semi-axes 1 x 0.5 x 0.5 mm) at random, non-overlapping positions (their
-bounding spheres 2.1 mm apart) in the upstream half of the duct, random
-orientations, velocity (2, 0, 0) m/s plus a uniform random +-1 m/s per
-component (as from a feeder), uncharged.
+"""Write constant/parcels for the chargedDuct tutorial (and shortDuct): N
+PTFE ellipsoids (semi-axes 1 x 0.5 x 0.5 mm) at random, non-overlapping
+positions (their bounding spheres 2.1 mm apart) in the upstream end of the
+duct (5 mm < x < xMax), random orientations, velocity (2, 0, 0) m/s plus a
+uniform random +-1 m/s per component (as from a feeder), uncharged.
 
-    makeParcels.py [N] [seed]
+    makeParcels.py [N] [seed] [xMax]     default 2000, 1, 0.15 m
 """
 import sys
 import numpy as np
 
 N = int(sys.argv[1]) if len(sys.argv) > 1 else 2000
 rng = np.random.default_rng(int(sys.argv[2]) if len(sys.argv) > 2 else 1)
+xMax = float(sys.argv[3]) if len(sys.argv) > 3 else 0.15
 lo = np.array([0.005, 1.2e-3, 1.2e-3])
-hi = np.array([0.15, 0.02 - 1.2e-3, 0.02 - 1.2e-3])
+hi = np.array([xMax, 0.02 - 1.2e-3, 0.02 - 1.2e-3])
 dmin = 2.1e-3
 
 # Random sequential addition on a cell grid

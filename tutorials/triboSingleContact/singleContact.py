@@ -20,8 +20,9 @@ import math, os, re, shutil, subprocess, sys
 
 eps0 = 8.8541878128e-12
 
-# Table 1 (radius: the 3.18 mm PTFE/HDPE column is the diameter, see
-# shared/papers/README.md) and Table 2 (Y [Pa], nu, rho, mu, v_n).
+# Rasera 2022 Table 1 (radius: for PTFE and HDPE the 3.18 mm column is the
+# diameter, a 1/8-inch sphere: the tabulated Gamma = q_sat/(4 pi eps0 r^2)
+# is reproduced only with r = 1.59 mm) and Table 2 (Y [Pa], nu, rho, mu, v_n).
 # Plate: rigid (the calibration's Eq. 25 has no plate modulus).
 WALL_ROWS = {
     # name: r, q_i, dq_exp, Gamma, kappa_c, Y, nu, rho, mu, v
