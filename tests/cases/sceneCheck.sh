@@ -49,6 +49,7 @@ check sceneCheck.once "(recheckInterval 0: $n check in 4 steps)" test "$n" -eq 1
 
 #    The same box with open boundaries (patch, not wall): nothing to warn
 cd "$work/open" || exit 1
+setWriteInterval 1
 sed -i 's/type wall;/type patch;/' system/blockMeshDict
 run blockMesh blockMesh && run solver chargedParticleFoam || fail "sceneCheck.open (solver failed)"
 check sceneCheck.openQuiet "(open patches: no warning)" \
@@ -67,6 +68,7 @@ check sceneCheck.parallel "(summary of 2 processors = serial)" \
 #    above it is warned, 1e-6 s is not
 twoSpheres "$work/like" 1e-12 1e-12 1e-4 2e-4
 cd "$work/like" || exit 1
+setWriteInterval 1
 run blockMesh blockMesh && run solver chargedParticleFoam || fail "sceneCheck.like (solver failed)"
 dtC=$(value log.solver "time step" "Eq. 23\)")
 expect=$($PY - <<'PYEOF'
@@ -164,6 +166,7 @@ $PY makeParcels.py 50 > /dev/null
 sed -i -E 's/ q 0; \}/ q 1e-13; }/' constant/parcels
 sed -i -E 's/electrostaticsModel +none;/electrostaticsModel directCoulomb;/' constant/cloudProperties
 setEndTime 2e-4
+setWriteInterval 1
 cp -r "$work/pourSerial" "$work/pourParallel"
 run blockMesh blockMesh && run solver chargedParticleFoam || fail "sceneCheck.pourSerial (solver failed)"
 cd "$work/pourParallel" || exit 1
@@ -173,7 +176,23 @@ run blockMesh blockMesh && run decomposePar decomposePar \
 check sceneCheck.pourParallel "(like charges with contact on 2 processors: summary = serial)" \
     bash -c "grep -q 'Coulomb-collision step' log.parallel && diff <(sed -n '/^Scene check of/,/^\$/p' '$work/pourSerial/log.solver') <(sed -n '/^Scene check of/,/^\$/p' log.parallel) > /dev/null"
 
-# 6. Bad entries
+# 6. The advisor utility: the same check on a written time, without a run
+#    (the pair: the free-space and the Coulomb-step warnings); in parallel
+#    the same as serial
+advise() { chargedFoamAdvisor "$@" > log.advisor 2>&1; sed -n 's/^\([0-9]*\) warning(s)$/\1/p' log.advisor > advisor.warnings; }
+cd "$work/like" && advise -latestTime
+check sceneCheck.advisorWarns "(like pair at t = 2e-4 s: $(cat advisor.warnings) warnings, the solver's Coulomb warning)" \
+    bash -c "[ \$(cat advisor.warnings) = 2 ] && grep -q 'the force step 0.0001 s exceeds' log.advisor \
+             && [ \"\$(grep '^    time step' log.advisor)\" = \"\$(grep -m1 '^    time step' log.solver)\" ]"
+cd "$work/open" && advise -latestTime
+check sceneCheck.advisorQuiet "(open box: $(cat advisor.warnings) warnings)" \
+    bash -c "[ \$(cat advisor.warnings) = 0 ] && grep -q '^    no warnings' log.advisor"
+cd "$work/pourSerial" && advise -latestTime
+cd "$work/pourParallel" && mpirun -np 2 chargedFoamAdvisor -parallel -latestTime > log.advisor 2>&1
+check sceneCheck.advisorParallel "(2 processors: summary = serial advisor's)" \
+    bash -c "grep -q '^Scene check of' log.advisor && diff <(sed -n '/^Scene check of/,/^\$/p' '$work/pourSerial/log.advisor') <(sed -n '/^Scene check of/,/^\$/p' log.advisor) > /dev/null"
+
+# 7. Bad entries
 mkdir -p "$work/bad"
 for bad in "recheckInterval -1" "breakdownField 0"
 do

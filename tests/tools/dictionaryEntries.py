@@ -83,6 +83,9 @@ HELPERS = (
 # names: the entry names this lookup reads ([] if none: not a dictionary,
 # or a helper's parameter whose call sites are scanned as helpers).
 REVIEWED = {
+    ('chargedFoamAdvisor.C', '"rho." + phase'):
+        (['rho.<continuousPhase>'], 'the carrier gas density of a'
+             ' chargedDPMFoam case (transportProperties)'),
     # --- helpers: the key is the helper's parameter; the literal keys of
     #     the helper's calls are scanned (HELPERS, the `get` lambda)
     ('EllipsoidCollision.C', 'key'):

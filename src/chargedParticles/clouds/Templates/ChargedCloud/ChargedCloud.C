@@ -311,6 +311,14 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
 
 
 template<class CloudType>
+Foam::DynamicList<Foam::string>
+Foam::ChargedCloud<CloudType>::checkScene() const
+{
+    return sceneCheck_->check();
+}
+
+
+template<class CloudType>
 Foam::scalar Foam::ChargedCloud<CloudType>::agitation() const
 {
     scalar n = this->size(), sumUU = 0;
