@@ -132,10 +132,14 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         myAMin.append(cmptMin(s));
         myAMax.append(cmptMax(s));
         myArea.append(ellipsoid::surfaceArea(s));
-        mySinv.append
+        // R diag(a^2, b^2, c^2) R^T: the support function's matrix
+        const tensor S2
         (
-            symm(R & tensor(sqr(s.x()), 0, 0, 0, sqr(s.y()), 0, 0, 0, sqr(s.z())) & R.T())
+            sqr(s.x()), 0, 0,
+            0, sqr(s.y()), 0,
+            0, 0, sqr(s.z())
         );
+        mySinv.append(symm(R & S2 & R.T()));
     }
     const List<point> x(gatherOnMaster<point>(myX));
     const List<scalar> q(gatherOnMaster<scalar>(myQ));
@@ -211,7 +215,10 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     label nClose2 = 0, nClose1Charged = 0;
     if (Pstream::master() && nPolarisable > 0)
     {
-        gaps = sceneMeasures::nearestGaps(x, Sinv, aMin, aMax, polarisable, gapRange);
+        gaps = sceneMeasures::nearestGaps
+        (
+            x, Sinv, aMin, aMax, polarisable, gapRange
+        );
         forAll(gaps, i)
         {
             if (polarisable[i] && gaps[i] < gapRange)
@@ -234,7 +241,8 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         DynamicList<point> s;
         const bool anyCharged = nCharged > 0;
         const label nPool = anyCharged ? nCharged : n;
-        const label stride = max(label(1), nPool/2000 + (nPool % 2000 ? 1 : 0));
+        const label stride =
+            max(label(1), nPool/2000 + (nPool % 2000 ? 1 : 0));
         label j = 0;
         for (label i = 0; i < n; ++i)
         {
