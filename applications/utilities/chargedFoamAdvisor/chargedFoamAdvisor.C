@@ -58,9 +58,9 @@ int main(int argc, char *argv[])
 
     const word cloudName(args.lookupOrDefault<word>("cloud", "cloud"));
 
-    // Carrier density: the gas of a chargedDPMFoam case, else the uniform
-    // medium of chargedParticleFoam (only the breakdown check uses it)
-    scalar rhoCarrier = 0;
+    // The carrier: the uniform medium of chargedParticleFoam, or the gas
+    // density of a chargedDPMFoam case (only the breakdown check uses it)
+    #include "createCarrierMedium.H"
     {
         IOdictionary transport
         (
@@ -70,25 +70,15 @@ int main(int argc, char *argv[])
                 IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
             )
         );
-        IOdictionary carrier
-        (
-            IOobject
-            (
-                "carrierProperties", runTime.constant(), mesh,
-                IOobject::READ_IF_PRESENT, IOobject::NO_WRITE, false
-            )
-        );
         word phase;
         if (transport.readIfPresent("continuousPhase", phase))
         {
-            rhoCarrier = transport.get<dimensionedScalar>
+            rhoc == dimensionedScalar
             (
-                "rho." + phase
-            ).value();
-        }
-        else
-        {
-            rhoCarrier = carrier.lookupOrDefault<scalar>("rho", 0);
+                "rho",
+                dimDensity,
+                transport.get<dimensionedScalar>("rho." + phase).value()
+            );
         }
     }
 
@@ -98,25 +88,6 @@ int main(int argc, char *argv[])
         runTime.setTime(times[timei], timei);
         Info<< "Time = " << runTime.timeName() << endl;
         mesh.readUpdate();
-
-        volScalarField rhoc
-        (
-            IOobject("rho.advisor", runTime.timeName(), mesh),
-            mesh,
-            dimensionedScalar("rho", dimDensity, rhoCarrier)
-        );
-        volVectorField Uc
-        (
-            IOobject("U.advisor", runTime.timeName(), mesh),
-            mesh,
-            dimensionedVector("U", dimVelocity, Zero)
-        );
-        volScalarField muc
-        (
-            IOobject("mu.advisor", runTime.timeName(), mesh),
-            mesh,
-            dimensionedScalar("mu", dimDynamicViscosity, Zero)
-        );
 
         basicChargedCloud parcels(cloudName, rhoc, Uc, muc, g);
         if (returnReduce(parcels.size(), sumOp<label>()) == 0)
