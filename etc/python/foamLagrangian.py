@@ -1,6 +1,7 @@
 """Readers of OpenFOAM ASCII files for the tutorials' and tests' Python
 scripts: lagrangian IOField lists, the Cartesian 'positions' file, and the
-internal field of volume fields. etc/bashrc puts this folder on PYTHONPATH."""
+internal field of volume fields; write_field replaces the values of a
+lagrangian scalar IOField. etc/bashrc puts this folder on PYTHONPATH."""
 import re
 
 import numpy as np
@@ -40,6 +41,16 @@ def read_field(path):
     handles the list forms 'N(...)', 'N{v}' and 'N\\n(\\n...\\n)'."""
     body = open(path).read().split("// * * *", 1)[-1]
     return _list_values(re.sub(r"//.*", "", body), path)
+
+
+def write_field(path, values):
+    """Replace the list of an ASCII scalar IOField by values (same header)."""
+    text = open(path).read()
+    head, body = text.split("// * * *", 1)
+    star, rest = body.split("\n", 1)
+    listed = "%d\n(\n%s\n)\n" % (len(values),
+                                    "\n".join("%.17g" % v for v in values))
+    open(path, "w").write(head + "// * * *" + star + "\n\n" + listed)
 
 
 def read_internal_field(path, n=None):

@@ -110,6 +110,13 @@ REVIEWED = {
         ('electrostaticsCoeffs',
          '<type>Coeffs of the electrostatics model (added empty if absent):'
          ' one name per electrostaticsModel type'),
+    ('ElectrostaticsSurvey.C', 'caseType + "Coeffs"'):
+        ([], "the case's own <type>Coeffs (electrostaticsCoeffs, documented"
+             " per type), copied as a candidate"),
+    ('ElectrostaticsSurvey.C', 'type + "Coeffs"'):
+        ([], 'a candidate\'s <type>Coeffs: its solveInterval'),
+    ('ElectrostaticsSurvey.C', 'e.keyword()'):
+        ([], 'compares the entries of two coefficient dictionaries'),
     ('meshPoisson.C', 'Phi_.name()'):
         (['Phi'], 'system/fvSolution solvers/Phi must exist'),
     ('RaseraTriboCharging.C', 'name'):

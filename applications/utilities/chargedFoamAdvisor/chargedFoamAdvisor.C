@@ -13,12 +13,21 @@ Description
     same check the solvers log at their first step: SceneCheck). Serial or
     parallel (-parallel on a decomposed case).
 
+    With -rungs it also measures every applicable far-field rung on the
+    parcels (ElectrostaticsSurvey): the force error against the scene's
+    reference, the cost per evaluation and the memory, and recommends the
+    cheapest rung within -accuracy. The table goes to the log and to
+    postProcessing/advisor/<time>/rungs.dat, and etc/python/plotRungs.py
+    draws it to rungs.png beside it (error against cost) when python3 with
+    matplotlib is there.
+
     The carrier: a gas case (constant/transportProperties with
     continuousPhase, as chargedDPMFoam reads it) or the uniform medium of
     constant/carrierProperties (chargedParticleFoam; default vacuum).
 
 Usage
     chargedFoamAdvisor [-cloud name] [-time t | -latestTime] [-parallel]
+        [-rungs [-accuracy 0.05] [-sampleSize 1000] [-repeats 3]]
 
     The last lines: "N warning(s)" (for scripts; OpenFOAM's run-time
     control ends every application with exit status 0) and "End".
@@ -28,6 +37,8 @@ Usage
 #include "fvCFD.H"
 #include "basicChargedCloud.H"
 #include "timeSelector.H"
+#include "ElectrostaticsSurvey.H"
+#include "OFstream.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -45,6 +56,30 @@ int main(int argc, char *argv[])
         "name",
         "specify alternative cloud name; default is 'cloud'"
     );
+    argList::addBoolOption
+    (
+        "rungs",
+        "measure every applicable far-field rung on the parcels and"
+        " recommend the cheapest within -accuracy"
+    );
+    argList::addOption
+    (
+        "accuracy",
+        "value",
+        "rms force error the recommended rung must meet; default 0.05"
+    );
+    argList::addOption
+    (
+        "sampleSize",
+        "n",
+        "parcels compared (a random sample above); default 1000"
+    );
+    argList::addOption
+    (
+        "repeats",
+        "n",
+        "timed evaluations per rung (median); default 3"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -57,6 +92,19 @@ int main(int argc, char *argv[])
     #include "readGravitationalAcceleration.H"
 
     const word cloudName(args.lookupOrDefault<word>("cloud", "cloud"));
+
+    dictionary surveyDict("advisor");
+    if (args.found("accuracy"))
+    {
+        surveyDict.add("accuracy", args.get<scalar>("accuracy"));
+    }
+    for (const word opt : {"sampleSize", "repeats"})
+    {
+        if (args.found(opt))
+        {
+            surveyDict.add(opt, args.get<label>(opt));
+        }
+    }
 
     // The carrier: the uniform medium of chargedParticleFoam, or the gas
     // density of a chargedDPMFoam case (only the breakdown check uses it)
@@ -99,6 +147,50 @@ int main(int argc, char *argv[])
             continue;
         }
         nWarnings += parcels.checkScene().size();
+
+        if (args.found("rungs"))
+        {
+            ElectrostaticsSurvey<basicChargedCloud::chargedCloudType> survey
+            (
+                parcels,
+                surveyDict
+            );
+            survey.run(parcels.subModelProperties());
+            survey.write(Info);
+
+            if (Pstream::master())
+            {
+                const fileName dir
+                (
+                    runTime.globalPath()/"postProcessing"/"advisor"
+                   /runTime.timeName()
+                );
+                mkDir(dir);
+                {
+                    OFstream os(dir/"rungs.dat");
+                    survey.writeTable(os);
+                }
+                Info<< "Table written to " << dir/"rungs.dat" << endl;
+                const fileName plot
+                (
+                    getEnv("CHARGEDFOAM_DIR")/"etc"/"python"/"plotRungs.py"
+                );
+                // Debian's python3 has matplotlib (etc/setup installs it)
+                const fileName py
+                (
+                    isFile("/usr/bin/python3") ? "/usr/bin/python3" : "python3"
+                );
+                if (isFile(plot))
+                {
+                    Foam::system
+                    (
+                        py + " " + plot + " " + dir/"rungs.dat" + " "
+                      + dir/"rungs.png"
+                    );
+                }
+            }
+            Info<< endl;
+        }
     }
 
     reduce(nWarnings, maxOp<label>());

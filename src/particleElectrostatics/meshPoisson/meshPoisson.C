@@ -36,25 +36,27 @@ namespace
     // Volt = kg m^2 s^-3 A^-1
     const Foam::dimensionSet dimPotential(1, 2, -3, 0, 0, -1, 0);
     const Foam::dimensionSet dimChargeDensity(0, -3, 1, 0, 0, 1, 0);
+}
 
-    Foam::wordList defaultPhiTypes(const Foam::fvMesh& mesh)
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::wordList Foam::meshPoisson::defaultPhiTypes(const fvMesh& mesh)
+{
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    wordList types(pbm.size(), zeroGradientFvPatchScalarField::typeName);
+    forAll(pbm, patchi)
     {
-        using namespace Foam;
-        const polyBoundaryMesh& pbm = mesh.boundaryMesh();
-        wordList types(pbm.size(), zeroGradientFvPatchScalarField::typeName);
-        forAll(pbm, patchi)
+        if (isA<wallPolyPatch>(pbm[patchi]))
         {
-            if (isA<wallPolyPatch>(pbm[patchi]))
-            {
-                types[patchi] = fixedValueFvPatchScalarField::typeName;
-            }
-            else if (polyPatch::constraintType(pbm[patchi].type()))
-            {
-                types[patchi] = pbm[patchi].type();
-            }
+            types[patchi] = fixedValueFvPatchScalarField::typeName;
         }
-        return types;
+        else if (polyPatch::constraintType(pbm[patchi].type()))
+        {
+            types[patchi] = pbm[patchi].type();
+        }
     }
+    return types;
 }
 
 

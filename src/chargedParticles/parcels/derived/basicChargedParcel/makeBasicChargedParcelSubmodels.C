@@ -28,6 +28,7 @@ Description
 #include "CutoffCoulomb.H"
 #include "MeshPoisson.H"
 #include "ImageCoulomb.H"
+#include "AutoElectrostatics.H"
 #include "NoNearField.H"
 #include "InducedDipoleNearField.H"
 #include "BemNearField.H"
@@ -63,6 +64,7 @@ makeElectrostaticsModelType(PeriodicCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(CutoffCoulomb, basicChargedCloud);
 makeElectrostaticsModelType(MeshPoisson, basicChargedCloud);
 makeElectrostaticsModelType(ImageCoulomb, basicChargedCloud);
+makeElectrostaticsModelType(AutoElectrostatics, basicChargedCloud);
 
 makeNearFieldModel(basicChargedCloud);
 makeNearFieldModelType(NoNearField, basicChargedCloud);
