@@ -87,6 +87,32 @@ cp -r "$work/duct" "$work/ductAuto"
 run advisor chargedFoamAdvisor -latestTime -rungs -sampleSize 2000 \
     || fail "advisorRungs.duct (advisor failed)"
 dat=postProcessing/advisor/0.0002/rungs.dat
+# The scene report's time scales: Hertz collision time of the fastest
+# parcel head-on against its copy at its sharpest tip (Johnson 1985:
+# 2.868 (m*^2/(R* E*^2 v))^(1/5), m* = m/2, R* = c^2/(2 a), E* = E/(2 (1 -
+# nu^2)), v = 2 |U|) and the Stokes response time rho d_v^2/(18 mu) of the
+# volume-equivalent sphere, from the parcels written here
+tc=$(sed -nE 's/.*Hertz collision ([-0-9.e+]+) s.*/\1/p' log.advisor | head -1)
+tau=$(sed -nE 's/.*drag response \(Stokes\) median ([-0-9.e+]+) s.*/\1/p' log.advisor | head -1)
+read -r tcExpect tauExpect <<< "$($PY - <<PYEOF
+import sys; sys.path.insert(0, "$top/etc/python")
+import numpy as np
+from foamLagrangian import read_field
+t = "0.0002/lagrangian/cloud/"
+U, ax, rho = read_field(t + "U"), read_field(t + "semiAxes"), read_field(t + "rho")
+a, c = ax.max(1), ax.min(1)
+m = rho*4/3*np.pi*ax.prod(1)
+E, nu = 0.564e9, 0.42
+Es = E/(2*(1 - nu**2))
+v = 2*np.linalg.norm(U, axis=1)
+tc = (2.868*((m/2)**2/(c**2/a/2*Es**2*v))**0.2).min()
+dv = 2*np.cbrt(ax.prod(1))
+tau = np.median(rho*dv**2/(18*1.2*1.5e-5))
+print(tc, tau)
+PYEOF
+)"
+check advisorRungs.hertzTime "($tc s vs Johnson $tcExpect s)" rel "$tc" "$tcExpect" 1e-3
+check advisorRungs.dragTime "($tau s vs Stokes $tauExpect s)" rel "$tau" "$tauExpect" 1e-3
 check advisorRungs.ductScene "(box, x insulating, y and z grounded, boxImages)" \
     grep -q "scene box ((0.6 0.02 0.02) m; faces x insulating y grounded z grounded), reference boxImages" log.advisor
 # The reference and the error measure, recomputed: free-space sums against

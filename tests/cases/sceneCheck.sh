@@ -84,6 +84,13 @@ print(0.01*dC/w)                             # Eq. 23
 PYEOF
 )
 check sceneCheck.coulombStep "($dtC s vs Eqs. 21-23, 25: $expect s)" rel "$dtC" "$expect" 1e-3
+#    Volume fraction and plasma period 2 pi sqrt(eps0 m/(n q^2)), n = 2/V
+phiV=$(value log.solver parcels "volume fraction")
+expect=$($PY -c "import math; print(2*4/3*math.pi*50e-6**3/(4e-3*2e-3*2e-3))")
+check sceneCheck.volumeFraction "($phiV vs $expect)" rel "$phiV" "$expect" 1e-3
+Tp=$(value log.solver "time scales" "plasma period")
+expect=$($PY -c "import math; m = 1000*4/3*math.pi*50e-6**3; n = 2/(4e-3*2e-3*2e-3); print(2*math.pi*math.sqrt(8.8541878128e-12*m/(n*1e-12**2)))")
+check sceneCheck.plasmaPeriod "($Tp s vs $expect s)" rel "$Tp" "$expect" 1e-3
 check sceneCheck.coulombWarned "(deltaT 1e-4 s above it)" warned log.solver "the force step 0.0001 s exceeds"
 check sceneCheck.coulombQuiet "(deltaT 1e-6 s: no such warning in the pair case)" \
     bash -c "! grep -q 'exceeds the Coulomb' '$work/pair/log.solver'"

@@ -107,7 +107,8 @@ int main(int argc, char *argv[])
     }
 
     // The carrier: the uniform medium of chargedParticleFoam, or the gas
-    // density of a chargedDPMFoam case (only the breakdown check uses it)
+    // density and viscosity of a chargedDPMFoam case (the breakdown check
+    // and the drag response time use them)
     #include "createCarrierMedium.H"
     {
         IOdictionary transport
@@ -121,12 +122,15 @@ int main(int argc, char *argv[])
         word phase;
         if (transport.readIfPresent("continuousPhase", phase))
         {
-            rhoc == dimensionedScalar
-            (
-                "rho",
-                dimDensity,
-                transport.get<dimensionedScalar>("rho." + phase).value()
-            );
+            const scalar rho =
+                transport.get<dimensionedScalar>("rho." + phase).value();
+            rhoc == dimensionedScalar("rho", dimDensity, rho);
+            // Newtonian carrier (DPMFoam's singlePhaseTransportModel)
+            scalar nu = 0;
+            if (transport.readIfPresent("nu", nu))
+            {
+                muc == dimensionedScalar("mu", dimDynamicViscosity, rho*nu);
+            }
         }
     }
 

@@ -14,6 +14,7 @@
 #include "mathematicalConstants.H"
 #include "pairwiseCoulomb.H"
 #include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
 #include "ListListOps.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -57,6 +58,59 @@ Foam::wordList Foam::meshPoisson::defaultPhiTypes(const fvMesh& mesh)
         }
     }
     return types;
+}
+
+
+Foam::wordList Foam::meshPoisson::patchKinds(const fvMesh& mesh)
+{
+    const volScalarField Phi
+    (
+        IOobject
+        (
+            "Phi",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedScalar(dimPotential, Zero),
+        defaultPhiTypes(mesh)
+    );
+
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    wordList kinds(pbm.size());
+    forAll(pbm, patchi)
+    {
+        const polyPatch& pp = pbm[patchi];
+        if (isA<processorPolyPatch>(pp))
+        {
+            // The last patches, and different on every processor
+            kinds[patchi] = word::null;
+            continue;
+        }
+        const fvPatchScalarField& pf = Phi.boundaryField()[patchi];
+        // Every processor reduces, whatever its share of the patch
+        const scalar maxPhi = gMax(mag(pf)());
+        if (isA<emptyPolyPatch>(pp))
+        {
+            kinds[patchi] = word::null;
+        }
+        else if (isA<cyclicPolyPatch>(pp))
+        {
+            kinds[patchi] = "cyclic";
+        }
+        else if (pf.fixesValue())
+        {
+            kinds[patchi] = maxPhi > 0 ? "electrode" : "grounded";
+        }
+        else
+        {
+            kinds[patchi] = "insulating";
+        }
+    }
+    return kinds;
 }
 
 

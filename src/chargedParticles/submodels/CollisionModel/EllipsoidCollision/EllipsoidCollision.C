@@ -1485,7 +1485,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
+Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
+(
+    scalar* rayleighStep
+) const
 {
     // Worst case in the cloud: the fastest parcel hitting a copy of
     // itself head-on (m* = m/2, relative speed 2|U|) at its sharpest tip
@@ -1517,10 +1520,20 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     }
     reduce(minTcArg, minOp<scalar>());
     reduce(minRayleigh, minOp<scalar>());
-    const scalar minTc =
-        minTcArg < GREAT ? 2.868*Foam::pow(minTcArg, 0.2) : GREAT;
-    minRayleigh *=
-        constant::mathematical::pi/Foam::sqrt(G)/(0.8766 + 0.163*particleNu_);
+    if (rayleighStep)
+    {
+        *rayleighStep = minRayleigh*constant::mathematical::pi
+           /Foam::sqrt(G)/(0.8766 + 0.163*particleNu_);
+    }
+    return minTcArg < GREAT ? 2.868*Foam::pow(minTcArg, 0.2) : GREAT;
+}
+
+
+template<class CloudType>
+Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
+{
+    scalar minRayleigh = GREAT;
+    const scalar minTc = collisionTime(&minRayleigh);
 
     const scalar deltaT = this->owner().mesh().time().deltaTValue();
     if (minTc >= GREAT)

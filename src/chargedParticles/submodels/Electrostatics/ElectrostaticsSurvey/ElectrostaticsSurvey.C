@@ -7,7 +7,6 @@
 #include "ewaldSum.H"
 #include "pairwiseCoulomb.H"
 #include "meshPoisson.H"
-#include "volFields.H"
 #include "cyclicPolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "wallPolyPatch.H"
@@ -82,24 +81,9 @@ Foam::ElectrostaticsSurvey<CloudType>::classify()
     origin_ = bb.min();
     L_ = bb.span();
 
-    // Phi's boundary conditions: the case's 0/Phi (at the current time) or
+    // Phi's boundary conditions: the case's (at the current time) or
     // meshPoisson's defaults
-    const dimensionSet dimPotential(1, 2, -3, 0, 0, -1, 0);
-    const volScalarField Phi
-    (
-        IOobject
-        (
-            "Phi",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedScalar(dimPotential, Zero),
-        meshPoisson::defaultPhiTypes(mesh)
-    );
+    const wordList patchKinds(meshPoisson::patchKinds(mesh));
 
     // Per axis, the kinds of the boundary faces on its two planes (bits
     // 1 << faceKind); a face off the bounding box makes it no box
@@ -113,7 +97,7 @@ Foam::ElectrostaticsSurvey<CloudType>::classify()
     forAll(pbm, patchi)
     {
         const polyPatch& pp = pbm[patchi];
-        if (isA<processorPolyPatch>(pp) || pp.empty())
+        if (isA<processorPolyPatch>(pp))
         {
             continue;
         }
@@ -123,19 +107,22 @@ Foam::ElectrostaticsSurvey<CloudType>::classify()
             continue;
         }
         boxImages::faceKind kind = boxImages::faceKind::insulating;
-        if (isA<cyclicPolyPatch>(pp))
+        if (patchKinds[patchi] == "cyclic")
         {
             kind = boxImages::faceKind::periodic;
             anyCyclic = true;
         }
-        else if (Phi.boundaryField()[patchi].fixesValue())
+        else if
+        (
+            patchKinds[patchi] == "grounded"
+         || patchKinds[patchi] == "electrode"
+        )
         {
+            // The charges' own field vanishes on an electrode too
             kind = boxImages::faceKind::grounded;
             anyGrounded = true;
-            if (gMax(mag(Phi.boundaryField()[patchi])) > 0)
-            {
-                anyElectrode = true;
-            }
+            anyElectrode =
+                anyElectrode || patchKinds[patchi] == "electrode";
         }
         if (isA<wallPolyPatch>(pp))
         {

@@ -4,6 +4,7 @@
 
 #include "SceneCheck.H"
 #include "sceneMeasures.H"
+#include "meshPoisson.H"
 #include "coulombCollision.H"
 #include "pairwiseCoulomb.H"
 #include "ellipsoid.H"
@@ -117,9 +118,11 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
 
     // The parcels, on the master
     DynamicList<point> myX;
-    DynamicList<scalar> myQ, myEps, myM, myAMin, myAMax, myArea;
+    DynamicList<scalar> myQ, myEps, myM, myAMin, myAMax, myArea, myTau;
     DynamicList<symmTensor> mySinv;
     DynamicList<vector> myU;
+    scalar volParticles = 0;
+    const scalarField& muc = cloud_.mu().primitiveField();
     for (const parcelType& p : cloud_)
     {
         const vector& s = p.semiAxes();
@@ -132,6 +135,14 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         myAMin.append(cmptMin(s));
         myAMax.append(cmptMax(s));
         myArea.append(ellipsoid::surfaceArea(s));
+        volParticles += p.nParticle()*p.mass()/p.rho();
+        // Stokes response time of the volume-equivalent sphere
+        const scalar mu = muc[p.cell()];
+        if (mu > 0)
+        {
+            const scalar dv = 2*Foam::cbrt(s.x()*s.y()*s.z());
+            myTau.append(p.rho()*sqr(dv)/(18*mu));
+        }
         // R diag(a^2, b^2, c^2) R^T: the support function's matrix
         const tensor S2
         (
@@ -150,6 +161,7 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     const List<scalar> aMax(gatherOnMaster<scalar>(myAMax));
     const List<scalar> area(gatherOnMaster<scalar>(myArea));
     const List<symmTensor> Sinv(gatherOnMaster<symmTensor>(mySinv));
+    const List<scalar> tauDrag(gatherOnMaster<scalar>(myTau));
     const label n = x.size();
 
     // Wall and cyclic patches, wall faces of this processor
@@ -264,6 +276,16 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     // reduction) and the domain volume, on every processor
     const label nSub = max(label(1), cloud_.collision().nSubCycles());
     const scalar vol = gSum(mesh.cellVolumes());
+    reduce(volParticles, sumOp<scalar>());
+    const auto* ec =
+        dynamic_cast<const typename CloudType::collisionModelType*>
+        (
+            &cloud_.collision()
+        );
+    const scalar tHertz = ec ? ec->collisionTime() : GREAT;
+    // Electrical kinds of the patches (Phi's conditions or meshPoisson's
+    // defaults: what a mesh solve would take them for)
+    const wordList patchKinds(meshPoisson::patchKinds(cloud_.mesh()));
 
     DynamicList<string> warnings;
     if (!Pstream::master())
@@ -326,7 +348,9 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     string walls, cyclics;
     for (const word& w : wallNames)
     {
-        walls += (walls.empty() ? "" : " ") + w;
+        const word& kind =
+            patchKinds[mesh.boundaryMesh().findPatchID(w)];
+        walls += (walls.empty() ? "" : ", ") + w + ": " + kind;
     }
     for (const word& w : cyclicNames)
     {
@@ -336,7 +360,9 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     Info<< nl << "Scene check of " << cloudName << " at t = "
         << mesh.time().timeName() << " s:" << nl
         << "    parcels            " << n << ", aspect ratio "
-        << aspectMin << " to " << aspectMax << nl
+        << aspectMin << " to " << aspectMax << ", volume fraction "
+        << volParticles/vol << ", spacing (V/N)^(1/3) "
+        << Foam::cbrt(vol/max(n, label(1))) << " m" << nl
         << "    charges            " << nCharged << " charged (" << nPositive
         << " positive), q from " << qMin << " to " << qMax << " C, net "
         << qNet << " C" << nl
@@ -357,7 +383,15 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         Info<< "; surface gap to the nearest parcel: ";
         if (nClose2 > 0)
         {
-            Info<< "min " << min(gaps) << " smaller semi-axes, " << nClose2
+            DynamicList<scalar> close(nClose2);
+            for (const scalar g : gaps)
+            {
+                if (g < gapRange) close.append(g);
+            }
+            Info<< "min " << min(gaps) << ", 5 % "
+                << sceneMeasures::percentile(close, 0.05) << ", median "
+                << sceneMeasures::percentile(close, 0.5)
+                << " smaller semi-axes over the " << nClose2
                 << " parcels within " << gapRange;
         }
         else
@@ -410,6 +444,34 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     {
         Info<< "; Coulomb-collision step (Boutsikakis Eq. 23) " << dtCoulomb
             << " s";
+    }
+    Info<< nl << "    time scales        ";
+    if (tHertz < GREAT)
+    {
+        Info<< "Hertz collision " << tHertz << " s (fastest parcel); ";
+    }
+    if (nCharged > 0)
+    {
+        // Plasma period 2 pi/omega_p, omega_p^2 = n <q^2>/(eps0 epsR <m>)
+        scalar q2 = 0;
+        for (const scalar qi : q)
+        {
+            q2 += sqr(qi);
+        }
+        q2 /= n;
+        Info<< "plasma period "
+            << 2*constant::mathematical::pi
+              *Foam::sqrt(eps0*epsMedium*mMean/((n/vol)*q2))
+            << " s; ";
+    }
+    if (tauDrag.size())
+    {
+        Info<< "drag response (Stokes) median "
+            << sceneMeasures::percentile(tauDrag, 0.5) << " s";
+    }
+    else
+    {
+        Info<< "no drag (carrier without viscosity)";
     }
     Info<< nl;
     Info().precision(precision0);
