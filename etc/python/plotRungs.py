@@ -7,7 +7,8 @@ chargedFoamAdvisor -rungs (postProcessing/advisor/<time>/rungs.dat).
 One point per rung: rms force error against the scene's reference (log
 axis) and cost per evaluation relative to the cheapest rung (log axis);
 the accuracy target as a dashed line, the recommended rung filled in red.
-The rung 'none' (no far field, 100 % error) is left out."""
+The rung 'none' (no far field, 100 % error) and the near-field rows are
+left out."""
 import sys
 
 import matplotlib
@@ -37,7 +38,9 @@ def main():
     src = sys.argv[1]
     out = sys.argv[2] if len(sys.argv) > 2 else src.rsplit(".", 1)[0] + ".png"
     header, rows = read(src)
-    rows = [r for r in rows if r["name"] != "none"]
+    # The far-field rungs (the near-field rows have their own reference)
+    rows = [r for r in rows
+            if r["name"] != "none" and not r["name"].startswith("nearField:")]
     floor = 1e-7  # exact rungs (the reference itself) at the bottom
     fig, ax = plt.subplots(figsize=(8, 5))
     ax.set_xscale("log")

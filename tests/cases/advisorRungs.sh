@@ -23,6 +23,8 @@ rows, acc = [], None
 for line in open(sys.argv[1]):
     if line.startswith("# accuracy"):
         acc = float(line.split()[2])
+    elif line.startswith("nearField:"):
+        continue
     elif not line.startswith("#") and line.strip():
         f = line.split()
         rows.append((f[0], float(f[1]), float(f[3]), f[6] == "1"))
@@ -207,6 +209,40 @@ got=$(rungValue $dat "cutoffCoulomb(rCut=2l)" 2)
 expect=$(freeSpaceError 0.01 "$rc" none)
 check advisorRungs.openCutoff "(cutoff 2 l: rms $got vs $expect from numpy)" rel "$got" "$expect" 1e-6
 check advisorRungs.openRecommendation "(cheapest within 5 %)" recommendationRight $dat
+
+# 4. Polarisable parcels (tutorial dielectricSpheres: radii 50 and 100 um,
+#    epsilonR 10, 15 um apart): the near-field table. Point charges against
+#    the exact two-sphere force (etc/python/twoDielectricSpheres.py): the
+#    advisor's error of nearField none against BEM at 2400 patches must be
+#    the exact one to 1 %
+copyCase dielectricSpheres "$work/dielectric"
+cd "$work/dielectric" || exit 1
+setEndTime 1e-6
+setWriteInterval 1
+run blockMesh blockMesh && run solver chargedParticleFoam || fail "advisorRungs.dielectric (solver failed)"
+run advisor chargedFoamAdvisor -latestTime -rungs || fail "advisorRungs.dielectric (advisor failed)"
+dat=postProcessing/advisor/1e-06/rungs.dat
+got=$(rungValue $dat nearField:none 2)
+expect=$($PY - <<PYEOF
+import sys; sys.path.insert(0, "$top/etc/python")
+import numpy as np
+from foamLagrangian import read_positions
+from twoDielectricSpheres import force, eps0
+x = read_positions("1e-06/lagrangian/cloud/positions")
+d = np.linalg.norm(x[1] - x[0])
+Q1, Q2 = 1e-14, 3e-13
+exact = force(Q1, Q2, 50e-6, 100e-6, d, 10, 10)
+point = Q1*Q2/(4*np.pi*eps0*d**2)
+print(abs(point - exact)/abs(exact))
+PYEOF
+)
+check advisorRungs.nearFieldPointCharges "(nearField none: rms $got vs exact two-sphere $expect)" rel "$got" "$expect" 0.01
+bem=$(rungValue $dat nearField:bem 2)
+dip=$(rungValue $dat nearField:inducedDipole 2)
+check advisorRungs.nearFieldLadder "(bem $bem < 1 % < dipoles $dip < point charges $got)" \
+    $PY -c "import sys; sys.exit(0 if $bem < 0.01 < $dip < $got else 1)"
+check advisorRungs.nearFieldRecommendation "(nearField bem, the only one within 5 %)" \
+    grep -q "^# nearFieldRecommended nearField:bem" $dat
 
 # Bad options name the entry
 cd "$work/open" || exit 1

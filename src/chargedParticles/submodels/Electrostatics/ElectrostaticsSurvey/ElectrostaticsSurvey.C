@@ -422,7 +422,7 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::referenceForces()
         d.add("epsilonR", epsilonR_);
         d.add("radius", 6*cellSize_);
         scalar cost, memory;
-        return evaluate(rungDict("meshPoisson", d), cost, memory);
+        return evaluate(rungDict("meshPoisson", d), cost, memory, true);
     }
 
     pointField x;
@@ -472,7 +472,8 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
 (
     const dictionary& dict,
     scalar& cost,
-    scalar& memory
+    scalar& memory,
+    const bool chargesOnly
 )
 {
     memInfo mem;
@@ -522,7 +523,7 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
 
     // The field of the electrodes of a mesh rung (all charges zero) is not
     // the charges' own
-    if (type == "meshPoisson" && hasElectrodes_)
+    if (chargesOnly && type == "meshPoisson" && hasElectrodes_)
     {
         scalarField q0(cloud_.size());
         label i = 0;
@@ -586,7 +587,11 @@ Foam::ElectrostaticsSurvey<CloudType>::ElectrostaticsSurvey
     sample_(),
     anyForce_(false),
     rungs_(),
-    recommended_(-1)
+    recommended_(-1),
+    nearFarField_(),
+    nearReferenceName_(),
+    nearRungs_(),
+    nearRecommended_(-1)
 {
     readControls(dict);
 }
@@ -617,15 +622,89 @@ void Foam::ElectrostaticsSurvey<CloudType>::run(const dictionary& caseModels)
     sample_.transfer(all);
 
     const vectorField fRef(referenceForces());
+    measure(candidates(caseModels), fRef, true, rungs_);
+    recommended_ = cheapestWithin(rungs_);
 
-    const List<Tuple2<word, dictionary>> c(candidates(caseModels));
-    rungs_.setSize(c.size());
+    // The near field on the recommended (or most accurate) far field, for
+    // scenes with polarisable parcels: none, induced dipoles and BEM
+    // clusters against BEM clusters at twice the patches
+    nearRungs_.clear();
+    nearRecommended_ = -1;
+    bool polarisable = false;
+    for (const auto& p : cloud_)
+    {
+        polarisable =
+            polarisable || mag(p.epsilonR() - epsilonR_) > 1e-9*epsilonR_;
+    }
+    if (!returnReduce(polarisable, orOp<bool>()))
+    {
+        return;
+    }
+    const rung& far =
+        rungs_[recommended_ >= 0 ? recommended_ : mostAccurate()];
+    nearFarField_ = far.name;
+    const word farType(far.dict.template get<word>("electrostaticsModel"));
+    const bool bemAllowed = (farType != "periodic");
+
+    auto withNearField = [&](const dictionary& nearField)
+    {
+        dictionary d(far.dict);
+        d.subDict(farType + "Coeffs").set("nearField", nearField);
+        return d;
+    };
+
+    List<Tuple2<word, dictionary>> c;
+    {
+        dictionary none;
+        none.add("type", "none");
+        c.append({"nearField:none", withNearField(none)});
+        dictionary dip;
+        dip.add("type", "inducedDipole");
+        c.append({"nearField:inducedDipole", withNearField(dip)});
+    }
+    vectorField fNearRef;
+    if (bemAllowed)
+    {
+        dictionary bem;
+        bem.add("type", "bem");
+        c.append({"nearField:bem", withNearField(bem)});
+        bem.add("nPatches", 2400);
+        nearReferenceName_ = "bem(nPatches=2400)";
+        scalar cost, memory;
+        fNearRef = evaluate(withNearField(bem), cost, memory, false);
+    }
+    else
+    {
+        // The bem near field refuses periodic boxes: dipoles at a tight
+        // tolerance are the most accurate there
+        dictionary dip;
+        dip.add("type", "inducedDipole");
+        dip.add("tolerance", 1e-12);
+        nearReferenceName_ = "inducedDipole(tolerance=1e-12)";
+        scalar cost, memory;
+        fNearRef = evaluate(withNearField(dip), cost, memory, false);
+    }
+    measure(c, fNearRef, false, nearRungs_);
+    nearRecommended_ = cheapestWithin(nearRungs_);
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsSurvey<CloudType>::measure
+(
+    const List<Tuple2<word, dictionary>>& c,
+    const vectorField& fRef,
+    const bool chargesOnly,
+    List<rung>& rungs
+)
+{
+    rungs.setSize(c.size());
     forAll(c, k)
     {
-        rung& r = rungs_[k];
+        rung& r = rungs[k];
         r.name = c[k].first();
         r.dict = c[k].second();
-        const vectorField f(evaluate(r.dict, r.cost, r.memory));
+        const vectorField f(evaluate(r.dict, r.cost, r.memory, chargesOnly));
 
         r.rmsError = 0;
         r.p95Error = 0;
@@ -657,20 +736,29 @@ void Foam::ElectrostaticsSurvey<CloudType>::run(const dictionary& caseModels)
         Pstream::scatter(r.rmsError);
         Pstream::scatter(r.p95Error);
     }
-
     // The cloud's own model sets the forces again at its next evaluation
-    recommended_ = -1;
-    forAll(rungs_, k)
+}
+
+
+template<class CloudType>
+Foam::label Foam::ElectrostaticsSurvey<CloudType>::cheapestWithin
+(
+    const List<rung>& rungs
+) const
+{
+    label best = -1;
+    forAll(rungs, k)
     {
         if
         (
-            rungs_[k].rmsError <= accuracy_
-         && (recommended_ < 0 || rungs_[k].cost < rungs_[recommended_].cost)
+            rungs[k].rmsError <= accuracy_
+         && (best < 0 || rungs[k].cost < rungs[best].cost)
         )
         {
-            recommended_ = k;
+            best = k;
         }
     }
+    return best;
 }
 
 
@@ -761,6 +849,38 @@ void Foam::ElectrostaticsSurvey<CloudType>::write(Ostream& os) const
             << " the most accurate: " << rungs_[b].name << " ("
             << 100*rungs_[b].rmsError << " %)" << nl;
     }
+
+    if (nearRungs_.size())
+    {
+        os  << nl << "Near field on " << nearFarField_
+            << " (polarisable parcels), reference " << nearReferenceName_
+            << nl;
+        forAll(nearRungs_, k)
+        {
+            const rung& r = nearRungs_[k];
+            std::snprintf
+            (
+                line, sizeof(line),
+                "  %s %-34s %9.3g %9.3g %10.3g %9.3g %8.1f",
+                k == nearRecommended_ ? "*" : " ", r.name.c_str(),
+                100*r.rmsError, 100*r.p95Error, 1e3*r.cost,
+                r.cost/nearRungs_[0].cost, r.memory
+            );
+            os  << line << nl;
+        }
+        if (nearRecommended_ >= 0)
+        {
+            const rung& r = nearRungs_[nearRecommended_];
+            os  << "    Recommended (*): " << r.name << ", the cheapest with"
+                << " rms error <= " << 100*accuracy_ << " % (x cheap: cost"
+                << " relative to point charges)" << nl << r.dict;
+        }
+        else
+        {
+            os  << "    No near field meets rms error <= " << 100*accuracy_
+                << " %" << nl;
+        }
+    }
     os  << endl;
 }
 
@@ -793,6 +913,26 @@ void Foam::ElectrostaticsSurvey<CloudType>::writeTable(Ostream& os) const
         os  << r.name << ' ' << r.rmsError << ' ' << r.p95Error << ' '
             << r.cost << ' ' << (r.name == "none" ? 0 : r.cost/cheapest)
             << ' ' << r.memory << ' ' << (k == recommended_ ? 1 : 0) << nl;
+    }
+    if (nearRungs_.size())
+    {
+        // The near-field rows: cost relative to point charges
+        os  << "# nearFieldOn " << nearFarField_ << nl
+            << "# nearFieldReference " << nearReferenceName_ << nl
+            << "# nearFieldRecommended "
+            << (
+                   nearRecommended_ >= 0
+                 ? nearRungs_[nearRecommended_].name
+                 : word("none")
+               )
+            << nl;
+        forAll(nearRungs_, k)
+        {
+            const rung& r = nearRungs_[k];
+            os  << r.name << ' ' << r.rmsError << ' ' << r.p95Error << ' '
+                << r.cost << ' ' << r.cost/nearRungs_[0].cost << ' '
+                << r.memory << ' ' << (k == nearRecommended_ ? 1 : 0) << nl;
+        }
     }
 }
 
