@@ -1,8 +1,11 @@
 # electrostaticsModel cutoffCoulomb (direct truncation, cell list) in the
 # cloud: 60 charges of both signs in a 1 m box. The written forces fE equal
 # an independent brute-force truncated sum (numpy) for rCut = 0.3 m, in
-# serial and on 2 processors, and directCoulomb's for a cutoff beyond the
-# box.
+# serial and on 2 and 4 processors (each receives only its neighbours'
+# parcels within rCut: a halo), and directCoulomb's for a cutoff beyond the
+# box. The reduced-stiffness head-on collision (Ruan Table 1, chi 0.176)
+# with the pair split between 2 processors: the same trajectory as serial
+# (the halo reaches the contact partner).
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/cut"
@@ -29,6 +32,7 @@ s = re.sub(r"^writeInterval .*?;", "writeInterval 1;", s, flags=re.M)
 open(p, "w").write(s)
 PYEOF
 cp -r "$work/cut" "$work/parallel"
+cp -r "$work/cut" "$work/parallel4"
 cp -r "$work/cut" "$work/far"
 cp -r "$work/cut" "$work/direct"
 sed -i 's/rCut 0.3;/rCut 2;/' "$work/far/constant/cloudProperties"
@@ -44,6 +48,12 @@ run blockMesh blockMesh && run decomposePar decomposePar \
  && run solver mpirun -np 2 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \
     || fail "cutoffCloud.parallel (run failed, see $work/parallel)"
+cd "$work/parallel4" || exit 1
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 4 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "cutoffCloud.parallel4 (run failed, see $work/parallel4)"
 
 $PY - "$work" "$top/etc/python" <<'PYEOF'
 import os, sys
@@ -72,10 +82,11 @@ def load(case):
     idx = [np.argmin(np.linalg.norm(x0 - xi, axis=1)) for xi in x]
     return idx, f
 
-ref = {"cut": truncated(0.3), "parallel": truncated(0.3), "far": None}
+ref = {"cut": truncated(0.3), "parallel": truncated(0.3),
+       "parallel4": truncated(0.3), "far": None}
 idxD, fD = load(work + "/direct")
 direct = np.zeros_like(x0); direct[idxD] = fD
-for name in ("cut", "parallel", "far"):
+for name in ("cut", "parallel", "parallel4", "far"):
     idx, f = load(f"{work}/{name}")
     R = ref[name][idx] if ref[name] is not None else direct[idx]
     err = np.abs(f - R).max()/np.abs(R).max()
@@ -83,4 +94,39 @@ for name in ("cut", "parallel", "far"):
     what = "a numpy truncated sum (rCut 0.3 m)" if ref[name] is not None else "directCoulomb (rCut 2 m > box)"
     ok = len(set(idx)) == len(x0) and err < tol
     print(f"{'PASS' if ok else 'FAIL'}: cutoffCloud.{name} (fE vs {what}: max rel. difference {err:.1e}, tol {tol:g})")
+PYEOF
+
+# The reduced-stiffness collision (chi 0.176, deltaT 2e-7 s, to 1.1 ms)
+# with cutoffCoulomb rCut 300 um: the two spheres (centres 0 and 250 um)
+# on different processors; the contact correction needs the partner from
+# the halo. Serial and 2 processors: the same velocities
+copyCase reducedStiffness "$work/chi"
+cd "$work/chi" || exit 1
+sed -i -E "s/^( +stiffnessRatio +)[0-9.e-]+;/\10.176;/" constant/cloudProperties
+sed -i -E "s/^( *electrostaticsModel) directCoulomb;/\1 cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 3e-4; }/" constant/cloudProperties
+sed -i -E "s/^deltaT .*/deltaT          2e-7;/; s/^endTime .*/endTime         1.1e-3;/; s/^writeInterval .*/writeInterval   5500;/" system/controlDict
+cp -r "$work/chi" "$work/chiParallel"
+run blockMesh blockMesh && run solver chargedParticleFoam || fail "cutoffCloud.chi (solver failed)"
+cd "$work/chiParallel" || exit 1
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 2 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "cutoffCloud.chiParallel (run failed)"
+$PY - "$work" "$top/etc/python" <<'PYEOF'
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[2])
+from foamLagrangian import read_field, read_positions
+w = sys.argv[1]
+def state(case):
+    p = f"{case}/0.0011/lagrangian/cloud/"
+    x, U = read_positions(p + "positions"), read_field(p + "U").reshape(-1, 3)
+    o = np.argsort(x[:, 0])
+    return x[o], U[o]
+xs, Us = state(w + "/chi")
+xp, Up = state(w + "/chiParallel")
+err = np.abs(Up - Us).max()/np.abs(Us).max()
+moved = abs(xs[1, 0] - xs[0, 0] - 250e-6) > 1e-6
+print(f"{'PASS' if err < 1e-9 and moved else 'FAIL'}: cutoffCloud.haloContact "
+      f"(chi 0.176 pair split over 2 processors: velocities vs serial max rel. difference {err:.1e}, tol 1e-9; gap changed: {moved})")
 PYEOF

@@ -64,20 +64,26 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
 template<class CloudType>
 void Foam::CutoffCoulomb<CloudType>::calculate()
 {
-    // All charges as the sources, and per processor (the contact
-    // correction wants those)
-    List<pointField> allX;
-    List<scalarField> allQ;
+    // The local parcels and the halo of the other processors' parcels
+    // within the cutoff (and within reach of a contact partner for the
+    // reduced-stiffness correction): the same pairs as in serial
     pointField xS;
     scalarField qS;
-    label offset = 0;
-    this->gatherCharges(allX, allQ, xS, qS, offset);
+    labelList ids;
+    this->gatherHalo
+    (
+        this->contactCorrection_ != 0
+      ? max(rCut_, this->contactRange())
+      : rCut_,
+        xS, qS, ids
+    );
 
-    const pointField& x = allX[Pstream::myProcNo()];
-    vectorField E(x.size(), Zero);
-    this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, offset);
+    const label n = this->owner().size();
+    const pointField x(SubList<point>(xS, n));
+    vectorField E(n, Zero);
+    this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, 0);
 
-    this->setFields(allX, allQ, E);
+    this->setFields(xS, qS, ids, E);
 }
 
 

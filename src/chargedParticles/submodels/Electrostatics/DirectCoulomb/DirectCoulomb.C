@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "DirectCoulomb.H"
+#include "ListListOps.H"
 #include "Pstream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -28,41 +29,22 @@ Foam::scalar Foam::DirectCoulomb<CloudType>::readEpsilonR
 template<class CloudType>
 void Foam::DirectCoulomb<CloudType>::correctContactPairs
 (
-    const List<pointField>& allX,
-    const List<scalarField>& allQ,
+    const UList<point>& xS,
+    const UList<scalar>& qS,
+    const labelUList& ids,
+    const label myStart,
     vectorField& f
 ) const
 {
-    // (origProc, origId) of every parcel of every processor, to find the
-    // contact partners named by the collision records
-    List<labelList> allIds(Pstream::nProcs());
-    labelList& ids = allIds[Pstream::myProcNo()];
-    ids.setSize(2*this->owner().size());
+    // The contact partners named by the collision records, among the
+    // sources by their (origProc, origId)
+    HashTable<label, labelPair, Hash<labelPair>> where(2*xS.size());
+    forAll(xS, j)
+    {
+        where.insert(labelPair(ids[2*j], ids[2*j + 1]), j);
+    }
+
     label i = 0;
-    for (const auto& p : this->owner())
-    {
-        ids[2*i] = p.origProc();
-        ids[2*i + 1] = p.origId();
-        ++i;
-    }
-    Pstream::gatherList(allIds);
-    Pstream::scatterList(allIds);
-
-    HashTable<labelPair, labelPair, Hash<labelPair>> where;
-    forAll(allIds, proci)
-    {
-        for (label j = 0; j < allIds[proci].size()/2; ++j)
-        {
-            where.insert
-            (
-                labelPair(allIds[proci][2*j], allIds[proci][2*j + 1]),
-                labelPair(proci, j)
-            );
-        }
-    }
-
-    const label me = Pstream::myProcNo();
-    i = 0;
     for (const auto& p : this->owner())
     {
         for (const auto& record : p.collisionRecords().pairRecords())
@@ -73,16 +55,29 @@ void Foam::DirectCoulomb<CloudType>::correctContactPairs
             );
             if (iter.found())
             {
-                const labelPair& pj = iter.val();
+                const label j = iter.val();
                 f[i] += contactCorrection_*coulomb_.pairForce
                 (
-                    allX[me][i], allQ[me][i],
-                    allX[pj.first()][pj.second()], allQ[pj.first()][pj.second()]
+                    xS[myStart + i], qS[myStart + i], xS[j], qS[j]
                 );
             }
         }
         ++i;
     }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::DirectCoulomb<CloudType>::contactRange() const
+{
+    // Two of the largest parcels touching: centres at most the sum of
+    // their largest semi-axes apart
+    scalar aMax = 0;
+    for (const auto& p : this->owner())
+    {
+        aMax = max(aMax, cmptMax(p.semiAxes()));
+    }
+    return 2*returnReduce(aMax, maxOp<scalar>());
 }
 
 
@@ -99,9 +94,64 @@ void Foam::DirectCoulomb<CloudType>::setFields
     vectorField f(allQ[Pstream::myProcNo()]*E);
     if (contactCorrection_ != 0)
     {
-        correctContactPairs(allX, allQ, f);
-    }
+        // (origProc, origId) of every parcel of every processor
+        List<labelList> allIds(Pstream::nProcs());
+        labelList& ids = allIds[Pstream::myProcNo()];
+        ids.setSize(2*this->owner().size());
+        label i = 0;
+        for (const auto& p : this->owner())
+        {
+            ids[2*i] = p.origProc();
+            ids[2*i + 1] = p.origId();
+            ++i;
+        }
+        Pstream::gatherList(allIds);
+        Pstream::scatterList(allIds);
 
+        pointField xS;
+        scalarField qS;
+        label myStart = 0;
+        this->combine(allX, allQ, xS, qS, myStart);
+        correctContactPairs
+        (
+            xS, qS,
+            ListListOps::combine<labelList>(allIds, accessOp<labelList>()),
+            myStart, f
+        );
+    }
+    setFields(E, f);
+}
+
+
+template<class CloudType>
+void Foam::DirectCoulomb<CloudType>::setFields
+(
+    const UList<point>& xS,
+    const UList<scalar>& qS,
+    const labelUList& ids,
+    const vectorField& E
+)
+{
+    vectorField f(E.size());
+    forAll(f, i)
+    {
+        f[i] = qS[i]*E[i];
+    }
+    if (contactCorrection_ != 0)
+    {
+        correctContactPairs(xS, qS, ids, 0, f);
+    }
+    setFields(E, f);
+}
+
+
+template<class CloudType>
+void Foam::DirectCoulomb<CloudType>::setFields
+(
+    const vectorField& E,
+    const vectorField& f
+)
+{
     label i = 0;
     for (auto& p : this->owner())
     {

@@ -6,6 +6,8 @@
 #include "cpuTime.H"
 #include "NearFieldModel.H"
 #include "ListListOps.H"
+#include "PstreamBuffers.H"
+#include "boundBox.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -153,6 +155,95 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
 {
     gatherCharges(allX, allQ);
     combine(allX, allQ, x, q, myStart);
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsModel<CloudType>::gatherHalo
+(
+    const scalar range,
+    pointField& x,
+    scalarField& q,
+    labelList& ids
+) const
+{
+    const label n = this->owner().size();
+    DynamicList<point> xs(n);
+    DynamicList<scalar> qs(n);
+    DynamicList<label> is(2*n);
+    for (const auto& p : this->owner())
+    {
+        xs.append(p.centre());
+        qs.append(p.q());
+        is.append(p.origProc());
+        is.append(p.origId());
+    }
+
+    if (Pstream::parRun())
+    {
+        // The processors' boxes (one each: O(P) words, not O(N))
+        const label me = Pstream::myProcNo();
+        List<boundBox> boxes(Pstream::nProcs());
+        boxes[me] = this->owner().mesh().bounds();
+        Pstream::gatherList(boxes);
+        Pstream::scatterList(boxes);
+
+        // Processor j gets my parcels inside its box grown by range; the
+        // same test tells j from whom to receive
+        const vector margin(range, range, range);
+        auto grown = [&](const label j)
+        {
+            return boundBox(boxes[j].min() - margin, boxes[j].max() + margin);
+        };
+        auto neighbours = [&](const label i, const label j)
+        {
+            return
+                i != j && boxes[i].valid() && boxes[j].valid()
+             && grown(j).overlaps(boxes[i]);
+        };
+
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        forAll(boxes, proci)
+        {
+            if (neighbours(me, proci))
+            {
+                const boundBox halo(grown(proci));
+                DynamicList<point> xSend;
+                DynamicList<scalar> qSend;
+                DynamicList<label> idSend;
+                for (label i = 0; i < n; ++i)
+                {
+                    if (halo.contains(xs[i]))
+                    {
+                        xSend.append(xs[i]);
+                        qSend.append(qs[i]);
+                        idSend.append(is[2*i]);
+                        idSend.append(is[2*i + 1]);
+                    }
+                }
+                UOPstream toProc(proci, pBufs);
+                toProc << xSend << qSend << idSend;
+            }
+        }
+        pBufs.finishedSends();
+        forAll(boxes, proci)
+        {
+            if (neighbours(proci, me))
+            {
+                UIPstream fromProc(proci, pBufs);
+                const pointField xr(fromProc);
+                const scalarField qr(fromProc);
+                const labelList idr(fromProc);
+                xs.append(xr);
+                qs.append(qr);
+                is.append(idr);
+            }
+        }
+    }
+
+    x.transfer(xs);
+    q.transfer(qs);
+    ids.transfer(is);
 }
 
 

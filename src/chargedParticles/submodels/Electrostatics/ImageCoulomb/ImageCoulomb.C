@@ -252,26 +252,31 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
 template<class CloudType>
 void Foam::ImageCoulomb<CloudType>::calculate()
 {
-    // All charges as the sources, and per processor (the contact
-    // correction wants those)
-    List<pointField> allX;
-    List<scalarField> allQ;
+    // The local parcels and the halo of the other processors' parcels
+    // within the cutoff: an image is at least as far from every point of
+    // the domain as the charge it mirrors, so the halo's images are all
+    // the images within the cutoff; real charges and images both
+    // truncated at rCut (Rasera 2022 section 2.4)
     pointField xS;
     scalarField qS;
-    label offset = 0;
-    this->gatherCharges(allX, allQ, xS, qS, offset);
-
-    // Every processor images all the charges (the same sources as in
-    // serial); real charges and images both truncated at rCut (Rasera
-    // 2022 section 2.4)
-    const pointField& x = allX[Pstream::myProcNo()];
-    vectorField E(x.size(), Zero);
-    planes_.addFieldsWithinCutoff
+    labelList ids;
+    this->gatherHalo
     (
-        this->coulomb_, x, xS, qS, this->rCut(), E, offset
+        this->contactCorrection_ != 0
+      ? max(this->rCut(), this->contactRange())
+      : this->rCut(),
+        xS, qS, ids
     );
 
-    this->setFields(allX, allQ, E);
+    const label n = this->owner().size();
+    const pointField x(SubList<point>(xS, n));
+    vectorField E(n, Zero);
+    planes_.addFieldsWithinCutoff
+    (
+        this->coulomb_, x, xS, qS, this->rCut(), E, 0
+    );
+
+    this->setFields(xS, qS, ids, E);
 }
 
 
