@@ -86,8 +86,12 @@ write_field(p, np.random.default_rng(1).normal(-2e-13, 1.5e-13, n))
 PYEOF
 cp -r "$work/duct" "$work/ductParallel"
 cp -r "$work/duct" "$work/ductAuto"
+start=$(date +%s.%N)
 run advisor chargedFoamAdvisor -latestTime -rungs -sampleSize 2000 \
     || fail "advisorRungs.duct (advisor failed)"
+seconds=$($PY -c "import time; print(round(time.time() - $start, 1))")
+check advisorRungs.ductSpeed "(the advisor with every rung on the 2000-parcel duct: $seconds s < 120 s)" \
+    $PY -c "import sys; sys.exit(0 if $seconds < 120 else 1)"
 dat=postProcessing/advisor/0.0002/rungs.dat
 # The scene report's time scales: Hertz collision time of the fastest
 # parcel head-on against its copy at its sharpest tip (Johnson 1985:

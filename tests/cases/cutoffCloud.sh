@@ -2,7 +2,8 @@
 # cloud: 60 charges of both signs in a 1 m box. The written forces fE equal
 # an independent brute-force truncated sum (numpy) for rCut = 0.3 m, in
 # serial and on 2 and 4 processors (each receives only its neighbours'
-# parcels within rCut: a halo), and directCoulomb's for a cutoff beyond the
+# parcels within rCut: a halo; 4 in a row, so the processors have different
+# numbers of processor patches), and directCoulomb's for a cutoff beyond the
 # box. The reduced-stiffness head-on collision (Ruan Table 1, chi 0.176)
 # with the pair split between 2 processors: the same trajectory as serial
 # (the halo reaches the contact partner).
@@ -49,7 +50,7 @@ run blockMesh blockMesh && run decomposePar decomposePar \
  && run reconstructPar reconstructPar -latestTime \
     || fail "cutoffCloud.parallel (run failed, see $work/parallel)"
 cd "$work/parallel4" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (4 1 1);/' system/decomposeParDict
 run blockMesh blockMesh && run decomposePar decomposePar \
  && run solver mpirun -np 4 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \

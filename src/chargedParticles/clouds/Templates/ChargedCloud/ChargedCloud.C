@@ -117,14 +117,17 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     electrostaticsModel_(nullptr),
     triboChargingModel_(nullptr),
     forcesStale_(true),
-    escapedCharge0_(this->mesh().boundaryMesh().size(), Zero),
-    escapedChargeLocal_(this->mesh().boundaryMesh().size(), Zero)
+    // One entry per patch that is not a processor patch: the same list on
+    // every processor (processor patches differ in number between them)
+    escapedCharge0_(this->mesh().boundaryMesh().nNonProcessor(), Zero),
+    escapedChargeLocal_(this->mesh().boundaryMesh().nNonProcessor(), Zero)
 {
     // Charge that left in an earlier run (restart)
-    this->outputProperties().readIfPresent("escapedCharge", escapedCharge0_);
-    if (escapedCharge0_.size() != escapedChargeLocal_.size())
+    scalarField q0;
+    this->outputProperties().readIfPresent("escapedCharge", q0);
+    forAll(escapedCharge0_, patchi)
     {
-        escapedCharge0_.setSize(escapedChargeLocal_.size(), Zero);
+        escapedCharge0_[patchi] = patchi < q0.size() ? q0[patchi] : 0;
     }
 
     if (this->solution().active())

@@ -214,8 +214,9 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     TriboChargingModel<CloudType>(dict, owner, type),
     pp_(),
     walls_(),
-    wallCharge0_(owner.mesh().boundaryMesh().size(), Zero),
-    wallChargeLocal_(owner.mesh().boundaryMesh().size(), Zero),
+    // Per patch that is not a processor patch: the same list everywhere
+    wallCharge0_(owner.mesh().boundaryMesh().nNonProcessor(), Zero),
+    wallChargeLocal_(owner.mesh().boundaryMesh().nNonProcessor(), Zero),
     nPairCharging_(0),
     nWallCharging_(0),
     wallImages_
@@ -242,9 +243,9 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     // Wall charges of the run this one continues
     scalarField q0;
     this->getModelProperty("wallCharge", q0);
-    if (q0.size() == wallCharge0_.size())
+    forAll(wallCharge0_, patchi)
     {
-        wallCharge0_ = q0;
+        wallCharge0_[patchi] = patchi < q0.size() ? q0[patchi] : 0;
     }
 }
 
