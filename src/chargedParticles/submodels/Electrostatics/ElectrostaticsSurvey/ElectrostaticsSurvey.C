@@ -778,7 +778,7 @@ Foam::label Foam::ElectrostaticsSurvey<CloudType>::mostAccurate() const
 
 
 template<class CloudType>
-void Foam::ElectrostaticsSurvey<CloudType>::write(Ostream& os) const
+Foam::scalar Foam::ElectrostaticsSurvey<CloudType>::cheapestCost() const
 {
     scalar cheapest = GREAT;
     for (const rung& r : rungs_)
@@ -788,6 +788,14 @@ void Foam::ElectrostaticsSurvey<CloudType>::write(Ostream& os) const
             cheapest = min(cheapest, r.cost);
         }
     }
+    return cheapest;
+}
+
+
+template<class CloudType>
+void Foam::ElectrostaticsSurvey<CloudType>::write(Ostream& os) const
+{
+    const scalar cheapest = cheapestCost();
 
     os  << "Electrostatics rungs measured on the parcels: scene "
         << sceneKindNames[kind_];
@@ -888,14 +896,7 @@ void Foam::ElectrostaticsSurvey<CloudType>::write(Ostream& os) const
 template<class CloudType>
 void Foam::ElectrostaticsSurvey<CloudType>::writeTable(Ostream& os) const
 {
-    scalar cheapest = GREAT;
-    for (const rung& r : rungs_)
-    {
-        if (r.name != "none" && r.cost > 0)
-        {
-            cheapest = min(cheapest, r.cost);
-        }
-    }
+    const scalar cheapest = cheapestCost();
     os  << "# scene " << sceneKindNames[kind_] << nl
         << "# reference " << referenceName_ << nl
         << "# accuracy " << accuracy_ << nl
