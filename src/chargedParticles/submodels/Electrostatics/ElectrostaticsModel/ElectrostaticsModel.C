@@ -184,7 +184,9 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
         // The processors' boxes (one each: O(P) words, not O(N))
         const label me = Pstream::myProcNo();
         List<boundBox> boxes(Pstream::nProcs());
-        boxes[me] = this->owner().mesh().bounds();
+        // This processor's own points (polyMesh::bounds() is the global
+        // box in parallel)
+        boxes[me] = boundBox(this->owner().mesh().points(), false);
         Pstream::gatherList(boxes);
         Pstream::scatterList(boxes);
 
