@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""Messages, bytes and peak memory per rank and per step of the
+electrostatics rungs in parallel, measured in the processes (mpiTally.c, a
+PMPI shim), under weak scaling: each rank holds the same number of parcels
+and cells.
+
+Scene: a box of P unit cubes along x (P ranks, decomposition simple (P 1 1),
+10^3 cells per cube, walls), n parcels per cube at random positions with
+charges of both signs (1e-9 C scale), chargedParticleFoam without contact.
+Each rung runs S0 and S steps; per step = (tally(S) - tally(S0))/(S - S0),
+which removes the start-up (reading, decomposition) traffic. Peak memory is
+the resident high-water mark (VmHWM) of the S-step run.
+
+    commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
+                  [--rungs cutoffCoulomb,directCoulomb,meshPoisson]
+                  [--work /tmp/commVolume]
+
+Prints one table per rung (ranks, mean and max bytes/step per rank,
+messages/step per rank, peak memory per rank in MB) and the ratio of the
+bytes per rank at the largest and at 2 ranks (flat within 20 % is the weak
+scaling target). More ranks than cores run oversubscribed: only volumes
+and memory are meaningful then, not time.
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+TOP = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+RUNGS = {
+    "cutoffCoulomb": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; }",
+    "directCoulomb": "electrostaticsModel directCoulomb;",
+    "meshPoisson": "electrostaticsModel meshPoisson;\n    meshPoissonCoeffs { radius 0.25; }",
+}
+
+
+def sh(cmd, cwd, log):
+    with open(os.path.join(cwd, log), "w") as f:
+        r = subprocess.run(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT, shell=True)
+    text = open(os.path.join(cwd, log)).read()
+    if r.returncode or "FOAM FATAL" in text:
+        sys.exit(f"{cmd} failed in {cwd} (see {log}):\n{text[-2000:]}")
+
+
+def make_case(case, P, n, rung, steps, seed=1):
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    shutil.copytree(os.path.join(TOP, "tutorials", "twoChargedSpheres"), case,
+                    ignore=shutil.ignore_patterns("[0-9]*", "processor*", "log.*"))
+    # Mesh: P unit cubes along x, walls
+    p = os.path.join(case, "system", "blockMeshDict")
+    s = open(p).read()
+    s = re.sub(r"^scale .*?;", "scale 1;", s, flags=re.M)
+    s = re.sub(r"vertices\s*\(.*?\);", f"""vertices
+(
+    (0 0 0) ({P} 0 0) ({P} 1 0) (0 1 0) (0 0 1) ({P} 0 1) ({P} 1 1) (0 1 1)
+);""", s, flags=re.S)
+    s = re.sub(r"blocks\s*\(.*?\);", f"blocks\n(\n    hex (0 1 2 3 4 5 6 7) ({10*P} 10 10) simpleGrading (1 1 1)\n);",
+               s, flags=re.S)
+    s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }\n);",
+               s, flags=re.S)
+    open(p, "w").write(s)
+    # Parcels and the rung
+    rng = np.random.default_rng(seed)
+    x = rng.random((n*P, 3))*[P - 0.1, 0.9, 0.9] + 0.05
+    q = 1e-9*(2*rng.random(n*P) - 1)
+    p = os.path.join(case, "constant", "cloudProperties")
+    s = open(p).read()
+    parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000; q %.9g; }"
+                        % (r[0], r[1], r[2], c) for r, c in zip(x, q))
+    s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
+    s = re.sub(r"electrostaticsModel\s+\w+;", RUNGS[rung], s)
+    # No per-step parcel history (it gathers every parcel on the master)
+    # and no scene check: only the solver's own traffic
+    s = re.sub(r"cloudFunctions\s*\{.*?\n\}", "cloudFunctions\n{\n}", s, flags=re.S)
+    s = re.sub(r"sceneCheck\s*\{[^}]*\}", "", s)
+    s += "\nsceneCheck { active false; }\n"
+    open(p, "w").write(s)
+    if rung == "meshPoisson":
+        p = os.path.join(case, "system", "fvSchemes")
+        s = open(p).read()
+        s = re.sub(r"gradSchemes\s*\{[^}]*\}", "gradSchemes { default Gauss linear; }", s)
+        s = re.sub(r"laplacianSchemes\s*\{[^}]*\}", "laplacianSchemes { default Gauss linear corrected; }", s)
+        s = re.sub(r"snGradSchemes\s*\{[^}]*\}", "snGradSchemes { default corrected; }", s)
+        open(p, "w").write(s)
+        p = os.path.join(case, "system", "fvSolution")
+        s = open(p).read()
+        if "Phi" not in s:
+            s = re.sub(r"solvers\s*\{", "solvers\n{\n    Phi { solver PCG; preconditioner DIC; tolerance 1e-10; relTol 0; }", s, count=1)
+            open(p, "w").write(s)
+    # Steps
+    p = os.path.join(case, "system", "controlDict")
+    s = open(p).read()
+    s = re.sub(r"^deltaT .*?;", "deltaT 1e-7;", s, flags=re.M)
+    s = re.sub(r"^endTime .*?;", f"endTime {steps*1e-7:.10g};", s, flags=re.M)
+    s = re.sub(r"^writeInterval .*?;", "writeInterval 100000;", s, flags=re.M)
+    open(p, "w").write(s)
+    p = os.path.join(case, "system", "decomposeParDict")
+    s = open(p).read()
+    s = re.sub(r"^numberOfSubdomains .*?;", f"numberOfSubdomains {P};", s, flags=re.M)
+    s = re.sub(r"n\s+\([^)]*\);", f"n ({P} 1 1);", s)
+    open(p, "w").write(s)
+
+
+def tally(case, P, lib):
+    out = os.path.join(case, "tally.txt")
+    if os.path.exists(out):
+        os.remove(out)
+    sh("blockMesh", case, "log.blockMesh")
+    env = f"-x LD_PRELOAD={lib} -x MPI_TALLY_FILE={out}"
+    sh("decomposePar -force", case, "log.decomposePar")
+    sh(f"mpirun --oversubscribe -np {P} {env} chargedParticleFoam -parallel", case, "log.solver")
+    rows = {}
+    for line in open(out):
+        f = line.split()
+        rows[int(f[1])] = (int(f[3]), int(f[5]), int(f[7]))
+    return rows
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--ranks", default="2,4,8")
+    ap.add_argument("--n", type=int, default=2000)
+    ap.add_argument("--steps", default="2,12")
+    ap.add_argument("--rungs", default="cutoffCoulomb,directCoulomb,meshPoisson")
+    ap.add_argument("--work", default="/tmp/commVolume")
+    a = ap.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    lib = os.path.join(a.work, "libmpiTally.so")
+    subprocess.run(["mpicc", "-shared", "-fPIC", "-O2", "-o", lib,
+                    os.path.join(HERE, "mpiTally.c")], check=True)
+    if os.geteuid() == 0:
+        os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    S0, S = (int(v) for v in a.steps.split(","))
+    ranks = [int(v) for v in a.ranks.split(",")]
+    print(f"weak scaling: {a.n} parcels and 1000 cells per rank; per step from {S - S0} steps "
+          f"({S} minus {S0}); peak memory of the {S}-step run")
+    for rung in a.rungs.split(","):
+        print(f"\n{rung}")
+        print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | peak memory per rank [MB] (max) |")
+        print("| --- | --- | --- | --- | --- |")
+        perRank = {}
+        for P in ranks:
+            res = []
+            for steps in (S0, S):
+                case = os.path.join(a.work, f"{rung}-P{P}-S{steps}")
+                make_case(case, P, a.n, rung, steps)
+                res.append(tally(case, P, lib))
+            b = np.array([(res[1][r][1] - res[0][r][1])/(S - S0) for r in range(P)])
+            m = np.array([(res[1][r][0] - res[0][r][0])/(S - S0) for r in range(P)])
+            mem = max(res[1][r][2] for r in range(P))/1024
+            perRank[P] = b.mean()
+            print(f"| {P} | {b.mean():.3g} | {b.max():.3g} | {m.mean():.3g} | {mem:.0f} |")
+        big = max(ranks)
+        if 2 in perRank and perRank[2] > 0 and big > 2:
+            print(f"bytes per rank and step, {big} ranks / 2 ranks: {perRank[big]/perRank[2]:.2f}")
+
+
+if __name__ == "__main__":
+    main()
