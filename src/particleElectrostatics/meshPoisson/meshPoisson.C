@@ -842,6 +842,14 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
 
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+void Foam::meshPoisson::resetPotential()
+{
+    // The boundary conditions (electrodes) stay
+    Phi_.primitiveFieldRef() = Zero;
+    Phi_.correctBoundaryConditions();
+}
+
+
 void Foam::meshPoisson::solve()
 {
     // Permittivity [F/m = A^2 s^4 kg^-1 m^-3]

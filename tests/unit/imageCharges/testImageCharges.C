@@ -3,10 +3,12 @@
 
     References are written out independently of the kernel: the analytic
     image force of one wall, the 3 images of a right-angle edge and the 7 of
-    a corner summed by hand, and a box's images enumerated axis by axis.
+    a corner summed by hand, and a box's images enumerated axis by axis;
+    the exact box (boxImages) against symmetry and the single-wall limit.
 \*---------------------------------------------------------------------------*/
 
 #include "groundedPlanes.H"
+#include "boxImages.H"
 #include "Random.H"
 #include "error.H"
 #include "mathematicalConstants.H"
@@ -352,6 +354,68 @@ TEST(groundedPlanes, BadPlanesAreAnError)
         Foam::error
     );
     FatalError.dontThrowExceptions();
+}
+
+
+// The exact box: a charge at the centre of a grounded cube feels nothing;
+// close to one face it feels its image -q at 2 d, the other faces adding
+// O((2 d/L)^2); an insulating face repels with the image +q
+TEST(boxImages, CentreAndSingleWallLimit)
+{
+    const scalar L = 1, d = 0.01;
+    const FixedList<boxImages::faceKind, 3> grounded
+    (
+        boxImages::faceKind::grounded
+    );
+    List<vector> f;
+    boxImages::forces
+    (
+        List<point>({point(0.5, 0.5, 0.5)}), List<scalar>({q0}),
+        point::zero, vector(L, L, L), grounded, 1, labelList({0}), f
+    );
+    EXPECT_LT(mag(f[0]), 1e-10*kC*q0*q0/(L*L)) << f[0];
+
+    const scalar single = kC*q0*q0/sqr(2*d);
+    boxImages::forces
+    (
+        List<point>({point(d, 0.5, 0.5)}), List<scalar>({q0}),
+        point::zero, vector(L, L, L), grounded, 1, labelList({0}), f
+    );
+    EXPECT_NEAR(f[0].x(), -single, 1e-3*single);
+    EXPECT_LT(mag(f[0].y()) + mag(f[0].z()), 1e-9*single);
+
+    // Insulating x faces (images of equal sign), grounded y and z; the
+    // origin shifted
+    FixedList<boxImages::faceKind, 3> kinds(grounded);
+    kinds[0] = boxImages::faceKind::insulating;
+    const point o(-3, 2, 7);
+    boxImages::forces
+    (
+        List<point>({o + vector(d, 0.5, 0.5)}), List<scalar>({q0}),
+        o, vector(L, L, L), kinds, 1, labelList({0}), f
+    );
+    EXPECT_NEAR(f[0].x(), single, 2e-3*single);
+}
+
+
+// Two charges in a periodic box with one grounded axis: the forces on the
+// pair are equal and opposite along the periodic axes (the images' forces
+// on each charge mirror each other by the box's symmetry about its centre)
+TEST(boxImages, PeriodicAxesMomentum)
+{
+    FixedList<boxImages::faceKind, 3> kinds(boxImages::faceKind::periodic);
+    kinds[2] = boxImages::faceKind::grounded;
+    const List<point> x({point(0.3, 0.4, 0.5), point(0.7, 0.6, 0.5)});
+    List<vector> f;
+    boxImages::forces
+    (
+        x, List<scalar>({q0, -q0}), point::zero, vector(1, 1, 1), kinds, 1,
+        labelList({0, 1}), f
+    );
+    const scalar scale = kC*q0*q0;
+    EXPECT_LT(mag(f[0].x() + f[1].x()), 1e-9*scale);
+    EXPECT_LT(mag(f[0].y() + f[1].y()), 1e-9*scale);
+    EXPECT_GT(mag(f[0]), 1e-3*scale);
 }
 
 

@@ -7,6 +7,7 @@
 #include "ewaldSum.H"
 #include "pairwiseCoulomb.H"
 #include "meshPoisson.H"
+#include "MeshPoisson.H"
 #include "cyclicPolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "wallPolyPatch.H"
@@ -515,6 +516,15 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
     }
     else forAll(times, r)
     {
+        // A mesh solve starts from the last potential: on unchanged
+        // charges it would not iterate at all, so each timed solve starts
+        // from zero (an upper bound of a run's solves from the previous
+        // step's potential)
+        auto* mp = dynamic_cast<MeshPoisson<CloudType>*>(model.get());
+        if (mp)
+        {
+            mp->solver().resetPotential();
+        }
         clockTime timer;
         for (label i = 0; i < n; ++i)
         {
