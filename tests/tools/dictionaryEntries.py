@@ -115,6 +115,9 @@ REVIEWED = {
              " per type), copied as a candidate"),
     ('ElectrostaticsSurvey.C', 'type + "Coeffs"'):
         ([], 'a candidate\'s <type>Coeffs: its solveInterval'),
+    ('ElectrostaticsSurvey.C', 'farType + "Coeffs"'):
+        ([], 'the recommended far field\'s <type>Coeffs, to which the'
+             ' near-field candidates add their nearField'),
     ('ElectrostaticsSurvey.C', 'e.keyword()'):
         ([], 'compares the entries of two coefficient dictionaries'),
     ('meshPoisson.C', 'Phi_.name()'):
