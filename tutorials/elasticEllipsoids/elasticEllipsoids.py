@@ -95,12 +95,13 @@ def momenta(axes, rho, x, U, q, omega_body):
 
 
 def hertz_leapfrog_floor(N, phases=40):
-    """Largest relative energy error of the cloud's velocity-Verlet
-    (kick-drift-kick) over a 1D Hertz impact, x'' = -x^3/2 for x > 0 (units
-    delta0, t0: every head-on Hertz impact), at deltaT = t_c/N with
-    t_c = 3.2187 t0 (Johnson's 2.868 (m*^2/(R E*^2 v))^(1/5)), over the
-    phase of the first touch within a step: the error of the integrator
-    for an exactly conservative contact force (a sphere's)."""
+    """Largest relative energy error of plain velocity Verlet
+    (kick-drift-kick, the force at the point) over a 1D Hertz impact,
+    x'' = -x^3/2 for x > 0 (units delta0, t0: every head-on Hertz impact),
+    at deltaT = t_c/N with t_c = 3.2187 t0 (Johnson's
+    2.868 (m*^2/(R E*^2 v))^(1/5)), over the phase of the first touch
+    within a step: the integrator's error for an exactly conservative
+    contact force without the cloud's step-averaged Hertz force."""
     tc = 3.2187
     dt = tc/N
     F = lambda x: -x**1.5 if x > 0 else 0.0
@@ -166,9 +167,9 @@ if __name__ == "__main__":
         print(f"{'all':6} {'':5} {sum(v[0] for v in sums[0][1].values()):3d} "
               + " ".join(f"{e:10.2e}" for e in pooled) + " "
               + " ".join(f"{o:12.2f}" for o in orders))
-        print(f"{'1D':6} {'floor':5} {'':3} "
+        print(f"{'1D':6} {'plain':5} {'':3} "
               + " ".join(f"{hertz_leapfrog_floor(N):10.2e}" for N, _ in runs)
-              + "   (velocity Verlet, head-on Hertz impact at deltaT = t_c/N)")
+              + "   (plain velocity Verlet, head-on Hertz impact at deltaT = t_c/N)")
         for N, _ in runs:
             pr = [r for r in rowsOf[N] if r[0] == "pair"]
             print(f"N={N}: pairs' momentum change max {max(r[5] for r in pr):.1e} of m|U|,"

@@ -286,9 +286,37 @@ void Foam::rigidBodyRotation::freeRotation
     const scalar Imax = max(I.x(), max(I.y(), I.z()));
     const scalar Imin = min(I.x(), min(I.y(), I.z()));
 
+    // The axis of a spheroid (two moments equal): the one that differs
+    direction axis = 3;
+    for (direction k = 0; k < 3; ++k)
+    {
+        const scalar Ij = I[(k + 1) % 3], Il = I[(k + 2) % 3];
+        if (mag(Ij - Il) <= sphereTolerance*Imax)
+        {
+            axis = k;
+        }
+    }
+
     if (Imax - Imin <= sphereTolerance*Imax)
     {
         sphereRotation(q, Lin, (I.x() + I.y() + I.z())/3, dt);
+    }
+    else if (axis < 3)
+    {
+        // Spheroid: H = |L|^2/(2 I_perp) + Lp_k^2 (1/I_k - 1/I_perp)/2,
+        // two commuting terms (|L| and Lp_k are constants of both flows),
+        // each an exact rotation: about the fixed inertial L at |L|/I_perp
+        // (on the left) and about the body axis k at
+        // Lp_k (1/I_k - 1/I_perp) (on the right). Exact for any dt (the
+        // regular precession of a symmetric top), two rotations where the
+        // splitting below takes five
+        const scalar Iperp = 0.5*(I[(axis + 1) % 3] + I[(axis + 2) % 3]);
+        sphereRotation(q, Lin, Iperp, dt);
+        const scalar Lpk = (Lin & q.R())[axis];
+        const scalar halfAngle = 0.5*Lpk*(1/I[axis] - 1/Iperp)*dt;
+        vector e(Zero);
+        e[axis] = std::sin(halfAngle);
+        q = q*quaternion(std::cos(halfAngle), e);
     }
     else
     {

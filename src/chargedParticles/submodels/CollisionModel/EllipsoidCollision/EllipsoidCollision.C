@@ -7,6 +7,7 @@
 #include "volFields.H"
 #include "PstreamBuffers.H"
 #include "cutoffPairs.H"
+#include "rigidBodyRotation.H"
 
 #include <algorithm>
 #include <type_traits>
@@ -279,13 +280,59 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 
 
 template<class CloudType>
+typename Foam::EllipsoidCollision<CloudType>::hertzMeans
+Foam::EllipsoidCollision<CloudType>::stepMeans
+(
+    const scalar delta,
+    const scalar a,
+    const bool fromZero
+)
+{
+    const scalar d32 = delta*Foam::sqrt(delta);
+    const scalar d52 = delta*d32;
+    if (!(a > SMALL*delta))
+    {
+        return {d32, d52};
+    }
+
+    const scalar hi = delta + a;
+    const scalar lo = fromZero ? 0 : max(delta - a, scalar(0));
+    if (lo > 0 && a < 1e-2*delta)
+    {
+        // The mean of (delta + s)^p over s in [-a, a]:
+        // delta^p sum_k C(p, 2k) (a/delta)^2k/(2k + 1), here to k = 2
+        // (the closed form below would cancel digits)
+        const scalar x = sqr(a/delta);
+        return
+        {
+            d32*(1 + x*(0.125 + 0.0046875*x)),
+            d52*(1 + x*(0.625 - 0.0078125*x))
+        };
+    }
+
+    // Integrals of delta^p d delta from lo to hi over the width 2a; no
+    // more than the largest value on the interval (a contact that began
+    // or ends at a step's edge but moves slower now)
+    const scalar sqrtHi = Foam::sqrt(hi), sqrtLo = Foam::sqrt(lo);
+    const scalar hi52 = sqr(hi)*sqrtHi, lo52 = sqr(lo)*sqrtLo;
+    return
+    {
+        min((hi52 - lo52)/(5*a), hi*sqrtHi),
+        min((hi52*hi - lo52*lo)/(7*a), hi52)
+    };
+}
+
+
+template<class CloudType>
 Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
 (
     const ellipsoidContact::result& c,
     const vector& vRel,
+    const vector& vRelPred,
     const scalar mStar,
     const contactLaw& law,
     vector& xi,
+    hertzMeans& means,
     const scalar energyWeight
 )
 {
@@ -297,13 +344,30 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     const scalar vn = vRel & n;             // > 0: approaching
     const vector vt = vRel - vn*n;
 
-    // Normal: Hertz (Ruan Eq. 36) + dashpot (Rasera Eq. 9), no tension
-    const scalar sqrtRdelta = Foam::sqrt(R*delta);
+    // Normal: Hertz (Ruan Eq. 36) as its step mean (see Description) +
+    // dashpot (Rasera Eq. 9), no tension. The contact begins at this step
+    // if the last drift (at vn) started from no overlap
+    const scalar a = 0.5*mag(vRelPred & n)*dt;
+    const bool begins = delta <= vn*dt;
+    means = stepMeans(delta, a, begins);
+
+    const scalar sqrtR = Foam::sqrt(R);
+    const scalar sqrtRdelta = sqrtR*Foam::sqrt(delta);
     const scalar Sn = 2*law.Estar*sqrtRdelta;                // dF/d delta
     const scalar etaN =
         2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(Sn*mStar);
-    const scalar Fe = (4.0/3.0)*law.Estar*sqrtRdelta*delta;
-    const scalar Fn = max(Fe + etaN*vn, scalar(0));
+    const scalar kHertz = (4.0/3.0)*law.Estar*sqrtR;
+    scalar Fe = kHertz*means.delta32;
+    scalar Fn = max(Fe + etaN*vn, scalar(0));
+
+    // ... or ends: no overlap after the next drift, at the approach speed
+    // this step's kick leaves
+    if (!begins && delta + dt*(vn - dt*Fn/mStar) <= 0)
+    {
+        means = stepMeans(delta, a, true);
+        Fe = kHertz*means.delta32;
+        Fn = max(Fe + etaN*vn, scalar(0));
+    }
 
     vector F = -Fn*n;
 
@@ -312,7 +376,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     // is dissipated (dashpot, or the released energy under the no-tension
     // cut)
     scalar dissipated = (Fn - Fe)*vn*dt;
-    scalar elastic = 0.4*Fe*delta;
+    scalar elastic = 0.4*kHertz*delta*delta*Foam::sqrt(delta);
 
     if (tangential_ == tangentialModel::coulomb)
     {
@@ -375,12 +439,12 @@ template<class CloudType>
 Foam::scalar Foam::EllipsoidCollision<CloudType>::hertzRadiusDerivative
 (
     const ellipsoidContact::result& c,
-    const contactLaw& law
+    const contactLaw& law,
+    const hertzMeans& means
 )
 {
-    const scalar delta = c.overlap;
     const scalar R = c.reducedRadius;
-    return R > 0 ? (4.0/15.0)*law.Estar*sqr(delta)*Foam::sqrt(delta/R) : 0;
+    return R > 0 ? (4.0/15.0)*law.Estar*means.delta52/Foam::sqrt(R) : 0;
 }
 
 
@@ -418,11 +482,30 @@ typename Foam::EllipsoidCollision<CloudType>::contactBody
 Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
 {
     const scalar dBl = bufferLayer(p);
+
+    // The kick still to come from the previous step's force and torque
+    // (kept until scatterForces): predicts U, omega at the force's time
+    const scalar halfDt = 0.5*this->owner().mesh().time().deltaTValue();
+    const vector dL = halfDt*p.torque();
+    const vector omegaKick =
+        p.isSphere()
+      ? dL/rigidBodyRotation::sphereMoment(p.mass(), p.semiAxes().x())
+      : rigidBodyRotation::toInertial
+        (
+            p.orientation(),
+            rigidBodyRotation::omegaBody
+            (
+                p.orientation(), dL, p.principalMoments()
+            )
+        );
+    const vector omega = p.omega();
     return contactBody
     {
         &p,
         p.U(),
-        p.omega(),
+        omega,
+        p.U() + halfDt*p.f()/p.mass(),
+        omega + omegaKick,
         p.mass(),
         cmptMax(p.semiAxes()) + dBl,
         dBl,
@@ -888,9 +971,14 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     const vector vRel =
         pointVelocity(A.U, A.omega, xA, xc)
       - pointVelocity(B.U, B.omega, xB, xc);
+    const vector vRelPred =
+        pointVelocity(A.Upred, A.omegaPred, xA, xc)
+      - pointVelocity(B.Upred, B.omegaPred, xB, xc);
     const scalar mStar = A.mass*B.mass/(A.mass + B.mass);
 
-    const vector F = contactForce(c, vRel, mStar, pp_, xi, energyWeight);
+    hertzMeans means;
+    const vector F =
+        contactForce(c, vRel, vRelPred, mStar, pp_, xi, means, energyWeight);
 
     const scalar twoDeltaBl = A.deltaBl + B.deltaBl;
     if (twoDeltaBl > 0 && c.overlap > 0.5*twoDeltaBl)
@@ -918,7 +1006,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
       : Zero;
 
     // The elastic force of the change of R (see Description)
-    const scalar dUdR = hertzRadiusDerivative(c, pp_);
+    const scalar dUdR = hertzRadiusDerivative(c, pp_, means);
 
     // Torques about the centroids (Ruan Eq. 40)
     torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
@@ -1124,7 +1212,10 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         vector& xi =
             p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
 
-        const vector F = contactForce(c, vRel, b.mass, pw_, xi);
+        const vector vRelPred = pointVelocity(b.Upred, b.omegaPred, xp, xc);
+        hertzMeans means;
+        const vector F =
+            contactForce(c, vRel, vRelPred, b.mass, pw_, xi, means);
         const vector Mr =
             pw_.muR > 0
           ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), pw_)
@@ -1138,7 +1229,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             );
         }
         // The elastic torque of the change of R (see Description)
-        const scalar dUdR = hertzRadiusDerivative(c, pw_);
+        const scalar dUdR = hertzRadiusDerivative(c, pw_, means);
         force_[i] += F;
         torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
     };
