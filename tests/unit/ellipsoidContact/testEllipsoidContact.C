@@ -29,6 +29,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ellipsoidContact.H"
+#include "hertzOnset.H"
 #include "error.H"
 #include "mathematicalConstants.H"
 
@@ -1295,5 +1296,94 @@ TEST(ellipsoid, SurfaceAreaAgainstClosedFormsAndQuadrature)
         }
         S *= sqr(pi/n);
         EXPECT_NEAR(ellipsoid::surfaceArea(vector(c, a, b))/S, 1, 1e-6);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Hertz onset * * * * * * * * * * * * * * * //
+
+TEST(hertzOnset, HurwitzZetaAgainstMpmath)
+{
+    // zeta(-3/2, q), zeta(-5/2, q) from mpmath 1.3 (mpmath.zeta(s, q), 17
+    // digits); q = 1: the Riemann values zeta(-3/2), zeta(-5/2)
+    const scalar ref[7][3] =
+    {
+        {1e-6, -0.025485512719718134, 0.0085168650644568186},
+        {0.1, -0.030681943042529056, 0.000943625820149835},
+        {0.25, -0.015109295630837674, -0.0080380960820038427},
+        {0.5, 0.016474822351728459, -0.0070113342544251243},
+        {0.75, 0.020934024932713121, 0.0067986555828864603},
+        {0.9, 0.00038795975130299785, 0.011436355745128029},
+        {1.0, -0.025485201889833036, 0.008516928777850331}
+    };
+    for (const auto& r : ref)
+    {
+        const hertzOnset::zetaPair z = hertzOnset::hertzZeta(r[0]);
+        EXPECT_NEAR(z.s32, r[1], 1e-12) << "q = " << r[0];
+        EXPECT_NEAR(z.s52, r[2], 1e-12) << "q = " << r[0];
+    }
+    // zeta(s, 1/2) = (2^-s - 1) zeta(s)
+    const hertzOnset::zetaPair h = hertzOnset::hertzZeta(0.5);
+    const hertzOnset::zetaPair one = hertzOnset::hertzZeta(1);
+    EXPECT_NEAR(h.s32, (std::pow(2, -1.5) - 1)*one.s32, 1e-12);
+    EXPECT_NEAR(h.s52, (std::pow(2, -2.5) - 1)*one.s52, 1e-12);
+
+    FatalError.throwExceptions();
+    EXPECT_THROW(hertzOnset::hertzZeta(0), Foam::error);
+    EXPECT_THROW(hertzOnset::hertzZeta(1.5), Foam::error);
+}
+
+
+TEST(hertzOnset, LeapfrogImpactConservesEnergy)
+{
+    // x'' = -x^3/2 for x > 0 (units of every head-on Hertz impact), kick-
+    // drift-kick at t_c/N, over the phase of the first touch within a
+    // step: the energy after the impact, plain and with the corrections
+    // of the first and last step in contact
+    auto impact = [](const label N, const scalar phase, const bool correct)
+    {
+        const scalar dt = 3.2187/N;
+        scalar x = -phase*dt, v = 1, f = 0;
+        bool touching = false;
+        for (label i = 0; i < 3*N; ++i)
+        {
+            v += 0.5*dt*f;
+            x += dt*v;
+            f = 0;
+            if (x > 0)
+            {
+                scalar d32 = x*std::sqrt(x);
+                if (correct && !touching)
+                {
+                    d32 -= hertzOnset::onsetCorrection(x, v*dt).delta32;
+                }
+                const scalar vNext = v - dt*d32;
+                if (correct && x + vNext*dt <= 0)
+                {
+                    d32 -= hertzOnset::onsetCorrection(x, -vNext*dt).delta32;
+                }
+                f = -d32;
+            }
+            touching = x > 0;
+            v += 0.5*dt*f;
+        }
+        return mag(v*v - 1);
+    };
+
+    for (const label N : {label(50), label(100)})
+    {
+        scalar plain = 0, corrected = 0;
+        for (label k = 0; k < 40; ++k)
+        {
+            plain = max(plain, impact(N, (k + 0.5)/40, false));
+            corrected = max(corrected, impact(N, (k + 0.5)/40, true));
+        }
+        std::printf
+        (
+            "[ measured ] 1D Hertz impact, %d steps per collision: max"
+            " |E/E0 - 1| plain %.2e, corrected %.2e\n",
+            int(N), plain, corrected
+        );
+        EXPECT_LT(corrected, 1e-3*plain);
     }
 }
