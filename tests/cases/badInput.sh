@@ -18,8 +18,9 @@
 # a charge from contact charging beyond 1e12 V/m, more than 1e6 collision
 # sub-cycles, a parcel kicked to the speed of light, coupled true without a
 # carrier, standardWallInteraction's e above 1; chargedDPMFoam's
-# nOuterCorrectors, pRefValue, a missing solvers dictionary, and the
-# parcels of OpenFOAM's manualInjection (U0, sizeDistribution, nParticle).
+# nOuterCorrectors, pRefValue, a missing solvers dictionary, the parcels
+# of OpenFOAM's manualInjection (U0, sizeDistribution, nParticle), and a
+# copy of an injection model (parcels at one position).
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -227,6 +228,8 @@ badCase lightSpeedParcel 'd 1e-4; rho 1000; q  1e-12' 'd 1e-9; rho 1000; q  1e-1
 badCase hugeMeshPoissonRadius 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e300; }' \
     'Entry radius = 1[.0-9]*e\+300 in .* is out of range: it must be finite and > 0, in \[1[.0-9]*e-09, '
+badCase repeatedInjector '(\);\s*\}\s*)\}' '\1    twin { $twoSpheres; }\n    }' \
+    "The parcels' positions must differ: check the injection models 2\(twoSpheres twin\)"
 base=carrier
 file=constant/carrierProperties
 badCase hugeCarrierVelocity 'U   \(0 0 0\);' 'U (1e300 0 0);' \

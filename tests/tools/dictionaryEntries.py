@@ -148,6 +148,8 @@ PASS_THROUGH = {
     # cloudProperties structure (KinematicCloud, cloudSolution)
     'solution': 'cloudSolution: the cloud dictionary holding the entries of'
                 ' EllipsoidCloud (trackingTolerance, ...)',
+    'maxCo': 'cloudSolution: tracking Courant number (EllipsoidCloud'
+             ' checks its range through solution().maxCo())',
     'subModels': 'KinematicCloud: the dictionary of the model selections',
     'cloudFunctions': 'KinematicCloud: cloud function objects'
                       ' (particleHistory)',

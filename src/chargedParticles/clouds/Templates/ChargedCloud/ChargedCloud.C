@@ -9,6 +9,8 @@
 #include "SceneCheck.H"
 #include "inputLimits.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
@@ -139,6 +141,56 @@ void Foam::ChargedCloud<CloudType>::checkPatchInteraction() const
                 << (key == "e" ? " (restitution coefficient)" : " (friction)")
                 << " = " << v << " in " << d.name().c_str() << " is out of"
                 << " range [0, 1]" << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::ChargedCloud<CloudType>::checkCoincident() const
+{
+    // Positions sorted lexicographically: equal ones are neighbours
+    List<const parcelType*> parcels(this->size());
+    pointField x(this->size());
+    label n = 0;
+    for (const parcelType& p : *this)
+    {
+        parcels[n] = &p;
+        x[n++] = p.position();
+    }
+    labelList order(identity(n));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&x](const label a, const label b)
+        {
+            return
+                x[a].x() < x[b].x()
+             || (x[a].x() == x[b].x() && x[a].y() < x[b].y())
+             || (x[a].x() == x[b].x() && x[a].y() == x[b].y()
+              && x[a].z() < x[b].z());
+        }
+    );
+    for (label k = 1; k < n; ++k)
+    {
+        const label a = order[k - 1];
+        const label b = order[k];
+        if (x[a] == x[b])
+        {
+            const dictionary& inj =
+                this->subModelProperties().subDict("injectionModels");
+            FatalIOErrorInFunction(inj)
+                << "Parcels (origProc " << parcels[a]->origProc()
+                << ", origId " << parcels[a]->origId() << ") and (origProc "
+                << parcels[b]->origProc() << ", origId "
+                << parcels[b]->origId() << ") are both at " << x[a]
+                << ": the Coulomb force between them is infinite." << nl
+                << "    The parcels' positions must differ: check the"
+                << " injection models " << inj.toc() << " in "
+                << inj.name().c_str() << " (two models alike, or a position"
+                << " given twice?), or the parcels of the start time"
+                << exit(FatalIOError);
         }
     }
 }
@@ -403,7 +455,25 @@ void Foam::ChargedCloud<CloudType>::initialiseForces()
 
     if (forcesStale_ && electrostatics().active())
     {
-        electrostatics().update();
+        // The first evaluation with newly injected (or read) parcels: a
+        // failure of the pairwise sums on two parcels at one position is
+        // reported with the injection models they came from (the mesh
+        // models take coincident charges, so no check beforehand)
+        const bool throwing = FatalError.throwExceptions();
+        try
+        {
+            electrostatics().update();
+        }
+        catch (const Foam::error& err)
+        {
+            FatalError.throwExceptions(throwing);
+            checkCoincident();
+
+            Foam::error original(err);
+            original.throwExceptions(throwing);
+            original.exit();
+        }
+        FatalError.throwExceptions(throwing);
     }
     forcesStale_ = false;
 }
