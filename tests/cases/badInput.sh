@@ -10,6 +10,17 @@
 # the BEM solver's maxPreconditionerPatches, directOutputMax, nearFactor;
 # non-finite carrierProperties (rho, mu, U). Non-finite values come from
 # #eval with FOAM_SIGFPE=false (the reader refuses nan and inf).
+# The escapes of the dictionary fuzzer (doc/extremes.md): maxCo out of
+# [1e-3, 1] (a hang), huge, nan or far values of the parcels' U, d, q,
+# position, semiAxes, of rho0, epsilonR, shape, SOI, the medium's epsilonR,
+# the mesh-Poisson radius, the carrier's U and rho, youngsModulus, mu,
+# maxInteractionDistance, deltaBl, a tiny restitution coefficient, Gamma,
+# a charge from contact charging beyond 1e12 V/m, more than 1e6 collision
+# sub-cycles, a parcel kicked to the speed of light, coupled true without a
+# carrier, standardWallInteraction's e above 1; chargedDPMFoam's
+# nOuterCorrectors, pRefValue, a missing solvers dictionary, the parcels
+# of OpenFOAM's manualInjection (U0, sizeDistribution, nParticle), and a
+# copy of an injection model (parcels at one position).
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -18,6 +29,11 @@ run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
 copyCase triboSingleContact "$work/tribo"
 cd "$work/tribo" || exit 1
 run blockMesh blockMesh || fail "badInput.mesh (blockMesh failed)"
+copyCase gasSettling "$work/dpm"
+cd "$work/dpm" || exit 1
+{ run makePositions $PY makePositions.py --n 20 && run blockMesh blockMesh; } \
+    || fail "badInput.mesh (gasSettling: makePositions or blockMesh failed)"
+solver=chargedParticleFoam
 base=base
 file=constant/cloudProperties
 
@@ -42,7 +58,7 @@ for pattern, repl in zip(sys.argv[2::2], sys.argv[3::2]):
         sys.exit("pattern not found: " + pattern)
 open(p, "w").write(s)
 PYEOF
-        chargedParticleFoam > log.solver 2>&1
+        $solver > log.solver 2>&1
         rc=$?
         if [ "$rc" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.solver \
             && grep -Eq "$expect" log.solver
@@ -170,6 +186,97 @@ FOAM_SIGFPE=false badCase infiniteCarrierViscosity 'mu  0;' 'mu #eval{1e300*1e30
 FOAM_SIGFPE=false badCase infiniteCarrierVelocity 'U   \(0 0 0\);' 'U (0 #eval{1e300*1e300} 0);' \
     'Entry U \(carrier velocity \[m/s\]\) = \(0 inf 0\) in .* is out of range: all components must be finite'
 file=constant/cloudProperties
+
+# -- Escapes of the dictionary fuzzer (applications/benchmarks/fuzzDictionaries) --
+base=base
+badCase zeroMaxCo 'maxCo +0.3;' 'maxCo 0;' \
+    'Entry maxCo \(tracking Courant number\) = 0 in .* is out of range \[0.001, 1\]'
+badCase hugeParcelVelocity 'U \(0 0 0\); d 1e-4; rho 1000; q  1e-12;' \
+    'U (0 1e300 0); d 1e-4; rho 1000; q  1e-12;' \
+    'Entry U of parcel 0 .* its magnitude must be below [0-9.e+]+ \(the speed of light'
+badCase hugeParcelDiameter 'd 1e-4; rho 1000; q  1e-12' 'd 1e300; rho 1000; q  1e-12' \
+    'Entry d of parcel 0 .* out of range \(1[.0-9]*e\+300\): it must be given, finite and > 0, in \[1[.0-9]*e-09, '
+badCase hugeParcelCharge 'q  1e-12;' 'q 1e300;' \
+    'Entry q of parcel 0 .* out of range \(1[.0-9]*e\+300\): \|q\| must be at most'
+badCase farParcelPosition 'position \(-0.5e-3 0 0\)' 'position (-0.5e-3 0 1e300)' \
+    "Entry position of parcel 0 .* it must lie in the mesh's bounding box"
+FOAM_SIGFPE=false badCase nanParcelPosition 'position \(-0.5e-3 0 0\)' \
+    'position (-0.5e-3 #eval{sqrt(-1)} 0)' \
+    'Entry position of parcel 0 .* all components must be finite'
+FOAM_SIGFPE=false badCase nanSemiAxes 'd 1e-4; rho 1000; q  1e-12' \
+    'semiAxes (1e-4 #eval{sqrt(-1)} 5e-5); rho 1000; q  1e-12' \
+    'Entry semiAxes of parcel 0 .* all must be finite and > 0'
+badCase needleSemiAxes 'd 1e-4; rho 1000; q  1e-12' \
+    'semiAxes (1e-4 1e-8 1e-8); rho 1000; q  1e-12' \
+    'Entry semiAxes of parcel 0 .* the longest at most 1000 times the shortest'
+FOAM_SIGFPE=false badCase nanRho0 'rho0 +1000;' 'rho0 #eval{sqrt(-1)};' \
+    'Entry rho0 \(particle density \[kg/m3\]\) = -?nan in .* is out of range'
+badCase hugeParticleEpsilonR 'rho0 +1000;' 'rho0 1000; epsilonR 1e300;' \
+    'Entry epsilonR \(relative permittivity of the particles\) = 1[.0-9]*e\+300 .* at most 1e\+30'
+badCase hugeShape 'rho0 +1000;' 'rho0 1000; shape (2 1e300 1);' \
+    'Entry shape \(semi-axes ratios a:b:c\) = .* the largest at most 1000 times the smallest'
+badCase tinyMediumEpsilonR 'epsilonR +1;' 'epsilonR 1e-200;' \
+    'Entry epsilonR \(relative permittivity of the medium\) = [.0-9]+e-20[01] is out of range: it must be finite and >= 1'
+FOAM_SIGFPE=false badCase nanSOI 'SOI +0;' 'SOI #eval{sqrt(-1)};' \
+    'Entry SOI \(start of injection \[s\]\) = -?nan'
+badCase coupledWithoutCarrier 'coupled +false;' 'coupled true;' \
+    'Entry coupled in .* is true: chargedParticleFoam solves no carrier flow'
+badCase reboundAboveOne 'rebound;(\s*)e +1;' 'rebound;\1e 2;' \
+    'Entry e \(restitution coefficient\) = 2 in .*standardWallInteractionCoeffs is out of range \[0, 1\]'
+badCase lightSpeedParcel 'd 1e-4; rho 1000; q  1e-12' 'd 1e-9; rho 1000; q  1e-12' \
+    'Parcel \(origProc 0, origId 0\) at .* has the velocity U = .* not below the speed of light'
+badCase hugeMeshPoissonRadius 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e300; }' \
+    'Entry radius = 1[.0-9]*e\+300 in .* is out of range: it must be finite and > 0, in \[1[.0-9]*e-09, '
+badCase repeatedInjector '(\);\s*\}\s*)\}' '\1    twin { $twoSpheres; }\n    }' \
+    "The parcels' positions must differ: check the injection models 2\(twoSpheres twin\)"
+base=carrier
+file=constant/carrierProperties
+badCase hugeCarrierVelocity 'U   \(0 0 0\);' 'U (1e300 0 0);' \
+    'Entry U \(carrier velocity \[m/s\]\) = \(1[.0-9]*e\+300 0 0\) .* below the speed of light'
+badCase hugeCarrierDensity 'rho 0;' 'rho 1e300;' \
+    'Entry rho \(carrier density \[kg/m3\]\) = 1[.0-9]*e\+300 .* at most 1e\+30'
+file=constant/cloudProperties
+
+base=tribo
+badCase hugeYoungsModulus 'youngsModulus +0.564e9;' 'youngsModulus 1e300;' \
+    'Entry youngsModulus = 1[.0-9]*e\+300 in .* is out of range: it must be finite and > 0, at most 1e\+30'
+badCase hugeFriction 'mu +0.065; +// Table 2' 'mu 1e300;' \
+    'Entry mu \(friction coefficient\) = 1[.0-9]*e\+300 in .* at most 1e\+30'
+badCase longInteractionDistance 'maxInteractionDistance +4e-3;' 'maxInteractionDistance 10;' \
+    "Entry maxInteractionDistance = 10 is out of range \(0, [0-9.e-]+\] \(the diagonal of the mesh's bounding box\)"
+FOAM_SIGFPE=false badCase infiniteBufferLayer 'deltaBlRatio +0;' 'deltaBl #eval{1e300*1e300};' \
+    'Entry deltaBl = inf is out of range: >= 0, at most maxInteractionDistance'
+badCase tinyRestitution 'e +1;(\s*mu +0.065; +// Table 2)' 'e 1e-200;\1' \
+    'Entry e \(restitution coefficient\) = [.0-9]+e-20[01] in .* is out of range \[1e-06, 1\]'
+badCase hugeGamma 'Gamma -2.34e6;' 'Gamma -1e300;' \
+    'Entry Gamma of wall patch plate in .* gives Gamma = -1[.0-9]*e\+300 V/m: out of range'
+badCase hugeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC 1e300;' \
+    'Entry kappaC = 1[.0-9]*e\+300 in .* is out of range: it must be finite and >= 0, at most 1e\+30'
+badCase chargeBeyondFieldMax 'plate +\{ kappaC 9.64;' 'plate { kappaC 1e25;' \
+    'Contact charging gave parcel .* V/m above [0-9e+]+ V/m, beyond any material: the charging entries kappaC = 1[.0-9]*e\+25'
+badCase tooManySubCycles 'youngsModulus +0.564e9;' 'youngsModulus 1e30;' \
+    'needs more than [0-9e+]+ collision sub-cycles of the time step'
+
+# chargedDPMFoam (gasSettling): fvSolution as OpenFOAM's solvers read it,
+# and the parcels of OpenFOAM's manualInjection
+base=dpm
+solver=chargedDPMFoam
+file=system/fvSolution
+badCase negativeOuterCorrectors 'nOuterCorrectors 1;' 'nOuterCorrectors -1;' \
+    'Entry nOuterCorrectors = -1 in .*PIMPLE is out of range: >= 1'
+badCase hugePRefValue 'pRefValue +0;' 'pRefValue 1e300;' \
+    'Entry pRefValue = 1[.0-9]*e\+300 in .*PIMPLE is out of range'
+badCase missingSolvers '\nsolvers\s*\n\{' '\nsolvesr\n{' \
+    'Entry solvers \{ p ...; U.air ...; \} is missing'
+file=constant/cloudProperties
+badCase hugeU0 'U0 +\(0 0 0\);' 'U0 (0 1e300 0);' \
+    'A parcel injected at t = .* by one of the injection models .* U = .*: its magnitude must be below the speed of light'
+FOAM_SIGFPE=false badCase nanSizeDistribution 'value +8e-5;' 'value #eval{sqrt(-1)};' \
+    'The parcels of injection model column in .* have a total volume of -?nan m3'
+badCase hugeNParticle 'nParticle +20;' 'nParticle 1e300;' \
+    'A parcel \(origProc 0, origId [0-9]+\) of the injection models .* carries nParticle = 1[.0-9]*e\+300 particles of .* out of range'
+solver=chargedParticleFoam
 
 base=tribo
 badCase negativeKappaC 'plate +\{ kappaC 9.64;' 'plate { kappaC -9.64;' \

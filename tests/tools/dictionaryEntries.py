@@ -105,6 +105,12 @@ REVIEWED = {
         ([], 'oneOf(dict, a, b, optional): helper, calls scanned'),
     ('triboParameters.C', 'b'):
         ([], 'oneOf(dict, a, b, optional): helper, calls scanned'),
+    ('ChargedCloud.C', 'key'):
+        (['e', 'mu'], 'checkPatchInteraction: e and mu of OpenFOAM\'s'
+             ' standardWallInteractionCoeffs, range-checked'),
+    ('MeshPoisson.C', 'key'):
+        (['radius', 'rCut'], 'checkedCoeffs: the charge shape radius of'
+             ' meshPoissonCoeffs, range-checked before meshPoisson reads it'),
     # --- keys built at run time
     ('ElectrostaticsModel.C', 'type + "Coeffs"'):
         ('electrostaticsCoeffs',
@@ -142,6 +148,8 @@ PASS_THROUGH = {
     # cloudProperties structure (KinematicCloud, cloudSolution)
     'solution': 'cloudSolution: the cloud dictionary holding the entries of'
                 ' EllipsoidCloud (trackingTolerance, ...)',
+    'maxCo': 'cloudSolution: tracking Courant number (EllipsoidCloud'
+             ' checks its range through solution().maxCo())',
     'subModels': 'KinematicCloud: the dictionary of the model selections',
     'cloudFunctions': 'KinematicCloud: cloud function objects'
                       ' (particleHistory)',

@@ -19,7 +19,8 @@ void Foam::pairwiseCoulomb::coincident
     FatalErrorInFunction
         << "Charges " << i << " and " << j << " coincide at " << x
         << ": the Coulomb force between them is infinite." << nl
-        << "    Check the initial positions (overlapping particles?)"
+        << "    Check the parcels' initial positions (entries position of"
+        << " the injection models: overlapping or repeated parcels?)"
         << exit(FatalError);
 
     ::abort();  // not reached

@@ -7,6 +7,9 @@
 #include "TriboChargingModel.H"
 #include "EllipsoidCollision.H"
 #include "SceneCheck.H"
+#include "inputLimits.H"
+
+#include <algorithm>
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -90,6 +93,110 @@ void Foam::ChargedCloud<CloudType>::checkConstProps() const
 
 
 template<class CloudType>
+void Foam::ChargedCloud<CloudType>::checkInjectors() const
+{
+    // Read by OpenFOAM's InjectionModel; NaN or inf reach the parcels'
+    // injection times and masses, and the carrier's sources
+    forAll(this->injectors(), i)
+    {
+        const auto& injector = this->injectors()[i];
+        const dictionary& d = injector.coeffDict();
+        if (!std::isfinite(injector.volumeTotal()))
+        {
+            FatalIOErrorInFunction(d)
+                << "The parcels of injection model " << injector.modelName()
+                << " in " << d.name().c_str() << " have a total volume of "
+                << injector.volumeTotal() << " m3: check its size entries"
+                << " (sizeDistribution, d, semiAxes)" << exit(FatalIOError);
+        }
+        scalar SOI = 0;
+        if (d.readIfPresent("SOI", SOI) && !std::isfinite(SOI))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry SOI (start of injection [s]) = " << SOI << " in "
+                << d.name().c_str() << " is out of range: it must be finite"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::ChargedCloud<CloudType>::checkPatchInteraction() const
+{
+    // OpenFOAM's rebound scales the normal velocity by -e and the
+    // tangential by (1 - mu), whatever their values
+    if (this->patchInteraction().type() != "standardWallInteraction")
+    {
+        return;
+    }
+    const dictionary& d = this->patchInteraction().coeffDict();
+    for (const word key : {"e", "mu"})
+    {
+        scalar v = 0;
+        if (d.readIfPresent(key, v) && !(v >= 0 && v <= 1))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry " << key
+                << (key == "e" ? " (restitution coefficient)" : " (friction)")
+                << " = " << v << " in " << d.name().c_str() << " is out of"
+                << " range [0, 1]" << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::ChargedCloud<CloudType>::checkCoincident() const
+{
+    // Positions sorted lexicographically: equal ones are neighbours
+    List<const parcelType*> parcels(this->size());
+    pointField x(this->size());
+    label n = 0;
+    for (const parcelType& p : *this)
+    {
+        parcels[n] = &p;
+        x[n++] = p.position();
+    }
+    labelList order(identity(n));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&x](const label a, const label b)
+        {
+            return
+                x[a].x() < x[b].x()
+             || (x[a].x() == x[b].x() && x[a].y() < x[b].y())
+             || (x[a].x() == x[b].x() && x[a].y() == x[b].y()
+              && x[a].z() < x[b].z());
+        }
+    );
+    for (label k = 1; k < n; ++k)
+    {
+        const label a = order[k - 1];
+        const label b = order[k];
+        if (x[a] == x[b])
+        {
+            const dictionary& inj =
+                this->subModelProperties().subDict("injectionModels");
+            FatalIOErrorInFunction(inj)
+                << "Parcels (origProc " << parcels[a]->origProc()
+                << ", origId " << parcels[a]->origId() << ") and (origProc "
+                << parcels[b]->origProc() << ", origId "
+                << parcels[b]->origId() << ") are both at " << x[a]
+                << ": the Coulomb force between them is infinite." << nl
+                << "    The parcels' positions must differ: check the"
+                << " injection models " << inj.toc() << " in "
+                << inj.name().c_str() << " (two models alike, or a position"
+                << " given twice?), or the parcels of the start time"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
 void Foam::ChargedCloud<CloudType>::cloudReset(ChargedCloud<CloudType>& c)
 {
     CloudType::cloudReset(c);
@@ -133,6 +240,8 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     if (this->solution().active())
     {
         checkConstProps();
+        checkInjectors();
+        checkPatchInteraction();
         setModels();
 
         if (readFields)
@@ -206,6 +315,67 @@ void Foam::ChargedCloud<CloudType>::checkParcelProperties
 {
     CloudType::checkParcelProperties(parcel, lagrangianDt, fullyDescribed);
     forcesStale_ = true;
+
+    // Whatever the injection model (explicitParcels names the parcel and
+    // its entry before this): a value out of range is reported with the
+    // injection models' dictionary, where it came from
+    const vector& s = parcel.semiAxes();
+    const scalar sizeMax = mag(this->mesh().bounds().span());
+    string what;
+    if (!inputLimits::finite(parcel.U()))
+    {
+        what = "U = " + Foam::name(parcel.U()) + ": all components must"
+            " be finite (velocity entries such as U0)";
+    }
+    else if (!inputLimits::magBelow(parcel.U(), inputLimits::speedOfLight))
+    {
+        what = "U = " + Foam::name(parcel.U()) + ": its magnitude must be"
+            " below the speed of light [m/s] (velocity entries such as U0)";
+    }
+    else if
+    (
+        !inputLimits::finite(s)
+     || !(cmptMin(s) >= 0.5*inputLimits::sizeMin)
+     || !(cmptMax(s) <= sizeMax)
+     || !(cmptMax(s) <= inputLimits::aspectRatioMax*cmptMin(s))
+    )
+    {
+        what = "d = " + Foam::name(parcel.d()) + ", semi-axes "
+            + Foam::name(s) + ": the semi-axes must be finite and > 0, in ["
+            + Foam::name(0.5*inputLimits::sizeMin) + ", "
+            + Foam::name(sizeMax) + "] m (0.5 nm to the diagonal of the"
+            " mesh's bounding box), the longest at most "
+            + Foam::name(inputLimits::aspectRatioMax) + " times the shortest"
+            " (size entries such as sizeDistribution)";
+    }
+    else if
+    (
+        !(
+            parcel.rho() >= inputLimits::densityMin
+         && parcel.rho() <= inputLimits::densityMax
+        )
+    )
+    {
+        what = "rho = " + Foam::name(parcel.rho()) + ": it must be finite"
+            " and in [" + Foam::name(inputLimits::densityMin) + ", "
+            + Foam::name(inputLimits::densityMax) + "] kg/m3";
+    }
+    else if (!(mag(parcel.q()) <= inputLimits::chargeMax))
+    {
+        what = "q = " + Foam::name(parcel.q()) + ": |q| must be at most "
+            + Foam::name(inputLimits::chargeMax) + " C (entry q0 of"
+            " constantProperties, or the injection model's)";
+    }
+    if (what.size())
+    {
+        const dictionary& inj =
+            this->subModelProperties().subDict("injectionModels");
+        FatalIOErrorInFunction(inj)
+            << "A parcel injected at t = " << this->db().time().value()
+            << " by one of the injection models " << inj.toc() << " in "
+            << inj.name().c_str() << " is out of range: " << what.c_str()
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -285,7 +455,25 @@ void Foam::ChargedCloud<CloudType>::initialiseForces()
 
     if (forcesStale_ && electrostatics().active())
     {
-        electrostatics().update();
+        // The first evaluation with newly injected (or read) parcels: a
+        // failure of the pairwise sums on two parcels at one position is
+        // reported with the injection models they came from (the mesh
+        // models take coincident charges, so no check beforehand)
+        const bool throwing = FatalError.throwExceptions();
+        try
+        {
+            electrostatics().update();
+        }
+        catch (const Foam::error& err)
+        {
+            FatalError.throwExceptions(throwing);
+            checkCoincident();
+
+            Foam::error original(err);
+            original.throwExceptions(throwing);
+            original.exit();
+        }
+        FatalError.throwExceptions(throwing);
     }
     forcesStale_ = false;
 }

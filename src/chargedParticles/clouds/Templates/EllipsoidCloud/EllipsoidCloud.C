@@ -6,6 +6,7 @@
 #include "cpuTime.H"
 #include "CollisionModel.H"
 #include "EllipsoidCollision.H"
+#include "inputLimits.H"
 #include "subCycleTime.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
@@ -145,6 +146,22 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
         }
     }
 
+    // The parcels' moves are split into segments of at most maxCo of a
+    // cell (EllipsoidParcel::move): maxCo <= 0 never ends a move
+    const scalar maxCo = this->solution().maxCo();
+    if
+    (
+        this->solution().active()
+     && !(maxCo >= inputLimits::maxCoMin && maxCo <= 1)
+    )
+    {
+        FatalIOErrorInFunction(this->solution().dict())
+            << "Entry maxCo (tracking Courant number) = " << maxCo
+            << " in " << this->solution().dict().name().c_str()
+            << " is out of range [" << inputLimits::maxCoMin << ", 1]"
+            << " (fraction of a cell a parcel moves per tracking segment)"
+            << exit(FatalIOError);
+    }
     if (logInterval_ < 1)
     {
         FatalIOErrorInFunction(this->solution().dict())
@@ -425,6 +442,30 @@ void Foam::EllipsoidCloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
+    // OpenFOAM's injection models set nParticle after checkParcelProperties
+    // (from their entry nParticle, or the mass and basis): a non-finite one,
+    // or one whose particles fill more than the mesh's bounding box, would
+    // reach the cloud's sums and the carrier's sources
+    const vector span(this->mesh().bounds().span());
+    const scalar bbVolume = span.x()*span.y()*span.z();
+    for (const parcelType& p : *this)
+    {
+        if (!(p.nParticle() > 0 && p.nParticle()*p.volume() <= bbVolume))
+        {
+            const dictionary& inj =
+                this->subModelProperties().subDict("injectionModels");
+            FatalIOErrorInFunction(inj)
+                << "A parcel (origProc " << p.origProc() << ", origId "
+                << p.origId() << ") of the injection models " << inj.toc()
+                << " carries nParticle = " << p.nParticle() << " particles"
+                << " of " << p.volume() << " m3: out of range, it must be"
+                << " finite and > 0, the particles' volume at most the mesh's"
+                << " bounding box, " << bbVolume << " m3: check the entries"
+                << " nParticle, massTotal and parcelBasisType in "
+                << inj.name().c_str() << exit(FatalIOError);
+        }
+    }
+
     const label nSubCycles = this->collision().nSubCycles();
 
     if (nSubCycles > 1)

@@ -68,6 +68,20 @@ bool Foam::EllipsoidParcel<ParcelType>::move
         td.part() = trackingData::tpLinearTrack;
     }
 
+    // A parcel kicked to the speed of light has met forces beyond any
+    // physical range: tracking it would cross the mesh without end
+    if (!inputLimits::magBelow(this->U(), inputLimits::speedOfLight))
+    {
+        FatalIOErrorInFunction(cloud.particleProperties())
+            << "Parcel (origProc " << this->origProc() << ", origId "
+            << this->origId() << ") at " << this->position() << " has the"
+            << " velocity U = " << this->U() << " m/s at t = "
+            << cloud.db().time().value() << " s, not below the speed of"
+            << " light: the forces on it are beyond any physical range."
+            << " Check the parcels' charges q and sizes, youngsModulus and"
+            << " the time step deltaT" << exit(FatalIOError);
+    }
+
     // The drift (lazy or tracked), then the rotation of the orientation
     // with the kicked angular momentum and the contact body for the
     // collision model, once, where the move ends: in parallel Cloud::move

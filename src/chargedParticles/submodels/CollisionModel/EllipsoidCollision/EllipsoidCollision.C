@@ -136,16 +136,17 @@ template<class CloudType>
 Foam::scalar Foam::EllipsoidCollision<CloudType>::readPositive
 (
     const dictionary& d,
-    const word& key
+    const word& key,
+    const scalar maxValue
 )
 {
     const scalar value = d.get<scalar>(key);
-    if (!(value > 0) || !std::isfinite(value))
+    if (!(value > 0) || !(value <= maxValue))
     {
         FatalIOErrorInFunction(d)
             << "Entry " << key << " = " << value << " in "
-            << d.name().c_str() << " is out of range: it must be finite and > 0"
-            << exit(FatalIOError);
+            << d.name().c_str() << " is out of range: it must be finite and"
+            << " > 0, at most " << maxValue << exit(FatalIOError);
     }
     return value;
 }
@@ -162,26 +163,30 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
 )
 {
     const scalar muR = dict.template lookupOrDefault<scalar>("rollingFriction", 0);
-    if (!(muR >= 0) || !std::isfinite(muR))
+    if (!(muR >= 0) || !(muR <= inputLimits::large))
     {
         FatalIOErrorInFunction(dict)
             << "Entry rollingFriction = " << muR << " in "
-            << dict.name().c_str() << " is out of range: it must be >= 0"
-            << exit(FatalIOError);
+            << dict.name().c_str() << " is out of range: it must be >= 0,"
+            << " at most " << inputLimits::large << exit(FatalIOError);
     }
-    if (!(e > 0 && e <= 1))
+    // Below 1e-6 the damping ratio is beyond the bracket of dampingRatio
+    // (|beta| = 1000; e = 1e-6 is |beta| = 500), whose bisection then
+    // integrates endless creeping contacts
+    if (!(e >= 1e-6 && e <= 1))
     {
         FatalIOErrorInFunction(dict)
             << "Entry e (restitution coefficient) = " << e << " in "
-            << dict.name().c_str() << " is out of range (0, 1]"
+            << dict.name().c_str() << " is out of range [1e-06, 1]"
+            << " (1e-06: a perfectly plastic contact)"
             << exit(FatalIOError);
     }
-    if (!(mu >= 0) || !std::isfinite(mu))
+    if (!(mu >= 0) || !(mu <= inputLimits::large))
     {
         FatalIOErrorInFunction(dict)
             << "Entry mu (friction coefficient) = " << mu << " in "
-            << dict.name().c_str() << " is out of range: it must be >= 0"
-            << exit(FatalIOError);
+            << dict.name().c_str() << " is out of range: it must be >= 0,"
+            << " at most " << inputLimits::large << exit(FatalIOError);
     }
     for (const scalar nu : {nu1, nu2})
     {
@@ -259,9 +264,13 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
         return;
     }
 
-    // Eq. (52): E > m v0^2/((2 delta_bl)^(5/2) R^(1/2))
+    // Eq. (52): E > m v0^2/((2 delta_bl)^(5/2) R^(1/2)), in logarithms
+    // (a buffer layer of a few nanometres underflows the power)
+    const scalar logEmin =
+        Foam::log(mStar) + 2*Foam::log(max(mag(vn), VSMALL))
+      - 2.5*Foam::log(twoDeltaBl) - 0.5*Foam::log(R);
     const scalar Emin =
-        mStar*sqr(vn)/(Foam::pow(twoDeltaBl, 2.5)*Foam::sqrt(R));
+        logEmin < Foam::log(GREAT) ? Foam::exp(logEmin) : GREAT;
 
     WarningInFunction
         << "Contact of parcel (origProc " << pA.origProc() << ", origId "
@@ -1440,11 +1449,27 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     const dictionary& coeffs = this->coeffDict();
     const dictionary& props = owner.constProps().dict();
 
-    if (this->coeffDict().found("deltaBl") && !(deltaBl_ >= 0))
+    if
+    (
+        this->coeffDict().found("deltaBl")
+     && !(deltaBl_ >= 0 && deltaBl_ <= maxDistance_)
+    )
     {
         FatalIOErrorInFunction(this->coeffDict())
-            << "Entry deltaBl = " << deltaBl_ << " is out of range: >= 0"
+            << "Entry deltaBl = " << deltaBl_ << " is out of range: >= 0,"
+            << " at most maxInteractionDistance = " << maxDistance_
             << exit(FatalIOError);
+    }
+
+    // The neighbour search bins the mesh's bounding box by this distance:
+    // a longer one finds the same pairs
+    const scalar diagonal = mag(owner.mesh().bounds().span());
+    if (!(maxDistance_ <= diagonal))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry maxInteractionDistance = " << maxDistance_
+            << " is out of range (0, " << diagonal << "] (the diagonal of the"
+            << " mesh's bounding box)" << exit(FatalIOError);
     }
     if (!(deltaBlRatio_ >= 0 && deltaBlRatio_ < 1))
     {
@@ -1567,11 +1592,14 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     // a wall contact (m* = m, R* = R, speed |U|) lasts longer
     // Hertz collision duration (Johnson 1985)
     //     t_c = 2.868 (m*^2/(R* E*^2 v))^(1/5),
-    // minimised through its monotonic argument (one pow per step)
-    scalar minTcArg = GREAT;
+    // minimised through the logarithm of its monotonic argument (one exp
+    // per step; the argument itself overflows for the heavy, soft or
+    // resting parcels of the accepted ranges, inputLimits.H)
+    scalar minLogTcArg = VGREAT;
     scalar minRayleigh = GREAT;
 
     const scalar E = pp_.Estar;
+    const scalar logE2 = 2*Foam::log(E);
     const scalar G = particleE_/(2*(1 + particleNu_));
     for (const parcelType& p : this->owner())
     {
@@ -1580,7 +1608,11 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
         const scalar m = p.mass();
         const scalar v = max(2*mag(p.U()), VSMALL);
 
-        minTcArg = min(minTcArg, sqr(0.5*m)/(0.5*Rtip*sqr(E)*v));
+        minLogTcArg = min
+        (
+            minLogTcArg,
+            2*Foam::log(0.5*m) - Foam::log(0.5*Rtip) - logE2 - Foam::log(v)
+        );
 
         // Rayleigh time step, Rasera Eq. (13), for the report
         minRayleigh = min
@@ -1589,14 +1621,17 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
             cmptMin(s)*Foam::sqrt(p.rho())
         );
     }
-    reduce(minTcArg, minOp<scalar>());
+    reduce(minLogTcArg, minOp<scalar>());
     reduce(minRayleigh, minOp<scalar>());
     if (rayleighStep)
     {
         *rayleighStep = minRayleigh*constant::mathematical::pi
            /Foam::sqrt(G)/(0.8766 + 0.163*particleNu_);
     }
-    return minTcArg < GREAT ? 2.868*Foam::pow(minTcArg, 0.2) : GREAT;
+    return
+        0.2*minLogTcArg < Foam::log(GREAT/2.868)
+      ? 2.868*Foam::exp(0.2*minLogTcArg)
+      : GREAT;
 }
 
 
@@ -1610,6 +1645,18 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     if (minTc >= GREAT)
     {
         return 1;
+    }
+    if (!(minTc*inputLimits::subCyclesMax >= deltaT*resolutionSteps_))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "The shortest collision time, " << minTc << " s (Hertz, of"
+            << " the fastest parcel of the cloud with E* = " << pp_.Estar
+            << " Pa from the entries youngsModulus), resolved by"
+            << " collisionResolutionSteps = " << resolutionSteps_
+            << " steps, needs more than " << inputLimits::subCyclesMax
+            << " collision sub-cycles of the time step deltaT = " << deltaT
+            << " s: lower deltaT, or check youngsModulus and the parcels'"
+            << " rho, size and U" << exit(FatalIOError);
     }
     const scalar dtC = minTc/resolutionSteps_;
     const label nNeeded = max(label(1), label(std::ceil(deltaT/dtC - 1e-9)));

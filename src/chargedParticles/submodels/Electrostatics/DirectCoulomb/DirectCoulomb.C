@@ -5,6 +5,7 @@
 #include "DirectCoulomb.H"
 #include "ListListOps.H"
 #include "Pstream.H"
+#include "inputLimits.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -15,11 +16,14 @@ Foam::scalar Foam::DirectCoulomb<CloudType>::readEpsilonR
 )
 {
     const scalar epsilonR = coeffs.lookupOrDefault<scalar>("epsilonR", 1);
-    if (!(epsilonR > 0) || !std::isfinite(epsilonR))
+    // A medium's permittivity is at least the vacuum's (the near-field
+    // kernels, e.g. BEM, take it so)
+    if (!(epsilonR >= 1 && epsilonR <= inputLimits::large))
     {
         FatalIOErrorInFunction(coeffs)
             << "Entry epsilonR (relative permittivity of the medium) = "
-            << epsilonR << " is out of range: it must be finite and > 0"
+            << epsilonR << " is out of range: it must be finite and >= 1"
+            << " (1: vacuum), at most " << inputLimits::large
             << exit(FatalIOError);
     }
     return epsilonR;

@@ -3,6 +3,38 @@
 \*---------------------------------------------------------------------------*/
 
 #include "MeshPoisson.H"
+#include "inputLimits.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary& Foam::MeshPoisson<CloudType>::checkedCoeffs
+(
+    const dictionary& coeffs,
+    const polyMesh& mesh
+)
+{
+    const scalar diagonal = mag(mesh.bounds().span());
+    for (const word key : {"radius", "rCut"})
+    {
+        scalar r = 0;
+        if
+        (
+            coeffs.readIfPresent(key, r)
+         && !(r >= inputLimits::sizeMin && r <= diagonal)
+        )
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Entry " << key << " = " << r << " in "
+                << coeffs.name().c_str() << " is out of range: it must be"
+                << " finite and > 0, in [" << inputLimits::sizeMin << ", "
+                << diagonal << "] m (1 nm to the diagonal of the mesh's"
+                << " bounding box)" << exit(FatalIOError);
+        }
+    }
+    return coeffs;
+}
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -14,7 +46,14 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
 )
 :
     DirectCoulomb<CloudType>(dict, owner, typeName),
-    solver_(new meshPoisson(owner.mesh(), this->coeffDict()))
+    solver_
+    (
+        new meshPoisson
+        (
+            owner.mesh(),
+            checkedCoeffs(this->coeffDict(), owner.mesh())
+        )
+    )
 {
     if (this->appliedField().valid())
     {

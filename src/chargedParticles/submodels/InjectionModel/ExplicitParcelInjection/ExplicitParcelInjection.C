@@ -5,6 +5,7 @@
 #include "ExplicitParcelInjection.H"
 #include "mathematicalConstants.H"
 #include "rigidBodyRotation.H"
+#include "inputLimits.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -33,21 +34,38 @@ Foam::scalar Foam::ExplicitParcelInjection<CloudType>::readParcelScalar
     const label i,
     const word& key,
     const bool positive,
-    const scalar* deflt
+    const scalar* deflt,
+    const scalar lo,
+    const scalar hi,
+    const string& unit
 ) const
 {
     scalar value = deflt ? *deflt : 0;
     const bool found = dict.readIfPresent(key, value);
+    const bool bounded = positive && hi > 0;
 
-    if ((!found && !deflt) || !std::isfinite(value) || (positive && !(value > 0)))
+    if
+    (
+        (!found && !deflt)
+     || !std::isfinite(value)
+     || (positive && !(value > 0))
+     || (bounded && !(value >= lo && value <= hi))
+    )
     {
         FatalIOErrorInFunction(dict)
             << "Entry " << key << " of parcel " << i << " in "
             << this->coeffDict().name().c_str() << "/parcels is "
             << (found ? "out of range (" + Foam::name(value) + ")" : "missing").c_str()
             << ": it must be given"
-            << (positive ? ", finite and > 0" : " and finite")
-            << exit(FatalIOError);
+            << (positive ? ", finite and > 0" : " and finite");
+        if (bounded)
+        {
+            const std::string from(lo > VSMALL ? "[" + Foam::name(lo) : "(0");
+            FatalIOError
+                << ", in " << from.c_str() << ", " << hi << "]"
+                << (unit.size() ? " " + unit : std::string()).c_str();
+        }
+        FatalIOError << exit(FatalIOError);
     }
     return value;
 }
@@ -59,21 +77,26 @@ void Foam::ExplicitParcelInjection<CloudType>::checkFinite
     const dictionary& dict,
     const label i,
     const word& key,
-    const vector& value
+    const vector& value,
+    const scalar maxMag,
+    const string& why
 ) const
 {
-    if
-    (
-        !std::isfinite(value.x())
-     || !std::isfinite(value.y())
-     || !std::isfinite(value.z())
-    )
+    if (!inputLimits::finite(value))
     {
         FatalIOErrorInFunction(dict)
             << "Entry " << key << " of parcel " << i << " in "
             << this->coeffDict().name().c_str() << "/parcels is out of"
             << " range (" << value << "): all components must be finite"
             << exit(FatalIOError);
+    }
+    if (maxMag > 0 && !inputLimits::magBelow(value, maxMag))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " of parcel " << i << " in "
+            << this->coeffDict().name().c_str() << "/parcels is out of"
+            << " range (" << value << "): its magnitude must be below "
+            << maxMag << " (" << why.c_str() << ")" << exit(FatalIOError);
     }
 }
 
@@ -107,14 +130,25 @@ Foam::quaternion Foam::ExplicitParcelInjection<CloudType>::readOrientation
     if (quat)
     {
         const FixedList<scalar, 4> c(pd.lookup("quaternion"));
-        const quaternion q(c[0], vector(c[1], c[2], c[3]));
-        if (!(mag(q) > 0) || !std::isfinite(mag(q)))
+        // Any finite, non-zero quaternion is a rotation: one of extreme
+        // size is scaled by its largest component first (its norm would
+        // overflow or underflow)
+        scalar cMax = 0;
+        bool finite = true;
+        for (const scalar ci : c)
+        {
+            finite = finite && std::isfinite(ci);
+            cMax = max(cMax, mag(ci));
+        }
+        if (!finite || !(cMax > 0))
         {
             FatalIOErrorInFunction(pd)
                 << "Entry quaternion of parcel " << i << " = " << c
                 << " is out of range: it must be finite and non-zero"
                 << exit(FatalIOError);
         }
+        const scalar s = (cMax > 1e100 || cMax < 1e-100) ? 1/cMax : 1;
+        const quaternion q(s*c[0], vector(s*c[1], s*c[2], s*c[3]));
         return q.normalized();
     }
     return quaternion::I;
@@ -140,9 +174,25 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
     orientation_.setSize(n);
     omegaBody_.setSize(n);
 
+    // The defaults are checked where constantProperties is read
     const scalar rho0 =
         this->owner().constProps().dict().template get<scalar>("rho0");
     const scalar epsilonR0 = this->owner().constProps().epsilonR0();
+
+    // Positions inside the mesh's bounding box (slightly inflated: the
+    // cell search decides at the boundary), sizes up to its diagonal
+    const boundBox& meshBb = this->owner().mesh().bounds();
+    const scalar sizeMax = mag(meshBb.span());
+    const boundBox bb
+    (
+        meshBb.min() - vector::uniform(1e-6*sizeMax),
+        meshBb.max() + vector::uniform(1e-6*sizeMax)
+    );
+    const string sizeUnit
+    (
+        "m (1 nm to the diagonal of the mesh's bounding box)"
+    );
+    const string densityUnit("kg/m3");
 
     forAll(parcels, i)
     {
@@ -154,8 +204,22 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
                 << this->coeffDict().name().c_str() << "/parcels is missing"
                 << exit(FatalIOError);
         }
+        checkFinite(pd, i, "position", positions_[i]);
+        if (!bb.contains(positions_[i]))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry position of parcel " << i << " in "
+                << this->coeffDict().name().c_str() << "/parcels is out of"
+                << " range (" << positions_[i] << "): it must lie in the"
+                << " mesh's bounding box " << meshBb
+                << exit(FatalIOError);
+        }
         U_[i] = pd.lookupOrDefault<vector>("U", Zero);
-        checkFinite(pd, i, "U", U_[i]);
+        checkFinite
+        (
+            pd, i, "U", U_[i], inputLimits::speedOfLight,
+            "the speed of light [m/s]"
+        );
 
         // Size: a sphere's diameter or an ellipsoid's semi-axes
         semiAxes_[i] = Zero;
@@ -170,28 +234,76 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
                     << exit(FatalIOError);
             }
             const vector& s = semiAxes_[i];
-            if (!(cmptMin(s) > 0) || !std::isfinite(cmptMax(s)))
+            if
+            (
+                !inputLimits::finite(s)
+             || !(cmptMin(s) >= 0.5*inputLimits::sizeMin)
+             || !(cmptMax(s) <= sizeMax)
+             || !(cmptMax(s) <= inputLimits::aspectRatioMax*cmptMin(s))
+            )
             {
                 FatalIOErrorInFunction(pd)
                     << "Entry semiAxes of parcel " << i << " in "
                     << this->coeffDict().name().c_str()
                     << "/parcels is out of range (" << s
-                    << "): all must be finite and > 0"
+                    << "): all must be finite and > 0, in ["
+                    << 0.5*inputLimits::sizeMin << ", " << sizeMax
+                    << "] m (0.5 nm to the diagonal of the mesh's bounding"
+                    << " box), the longest at most "
+                    << inputLimits::aspectRatioMax << " times the shortest"
                     << exit(FatalIOError);
             }
             d_[i] = 2*cbrt(s.x()*s.y()*s.z());
         }
+        else if (pd.found("d"))
+        {
+            d_[i] = readParcelScalar
+            (
+                pd, i, "d", true, nullptr, inputLimits::sizeMin, sizeMax,
+                sizeUnit
+            );
+        }
         else
         {
-            d_[i] = readParcelScalar(pd, i, "d", true);
+            FatalIOErrorInFunction(pd)
+                << "Entry d of parcel " << i << " in "
+                << this->coeffDict().name().c_str() << "/parcels is missing:"
+                << " give the diameter d of a sphere or the semiAxes of an"
+                << " ellipsoid" << exit(FatalIOError);
         }
         orientation_[i] = readOrientation(pd, i);
-        omegaBody_[i] = pd.lookupOrDefault<vector>("omega", Zero);
-        checkFinite(pd, i, "omega", omegaBody_[i]);
 
-        rho_[i] = readParcelScalar(pd, i, "rho", true, &rho0);
+        // Surface speed |omega| a below the speed of light
+        omegaBody_[i] = pd.lookupOrDefault<vector>("omega", Zero);
+        const scalar aMax =
+            semiAxes_[i] != vector::zero ? cmptMax(semiAxes_[i]) : 0.5*d_[i];
+        checkFinite
+        (
+            pd, i, "omega", omegaBody_[i], inputLimits::speedOfLight/aMax,
+            "[rad/s]: its surface speed |omega| a, a = " + Foam::name(aMax)
+          + " m the largest semi-axis, below the speed of light"
+        );
+
+        rho_[i] = readParcelScalar
+        (
+            pd, i, "rho", true, &rho0,
+            inputLimits::densityMin, inputLimits::densityMax, densityUnit
+        );
+        epsilonR_[i] = readParcelScalar
+        (
+            pd, i, "epsilonR", true, &epsilonR0,
+            VSMALL, inputLimits::large, string::null
+        );
+
         q_[i] = readParcelScalar(pd, i, "q", false);
-        epsilonR_[i] = readParcelScalar(pd, i, "epsilonR", true, &epsilonR0);
+        if (!(mag(q_[i]) <= inputLimits::chargeMax))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry q of parcel " << i << " in "
+                << this->coeffDict().name().c_str() << "/parcels is out of"
+                << " range (" << q_[i] << "): |q| must be at most "
+                << inputLimits::chargeMax << " C" << exit(FatalIOError);
+        }
     }
 
     this->volumeTotal_ = constant::mathematical::pi/6*sum(pow3(d_));

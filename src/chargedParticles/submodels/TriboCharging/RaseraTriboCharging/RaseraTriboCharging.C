@@ -24,12 +24,22 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                 << exit(FatalIOError);
         }
         const scalar v = d.get<scalar>(key);
-        if (!std::isfinite(v) || (positive && !(v >= 0)))
+        if
+        (
+            !std::isfinite(v)
+         || (positive && !(v >= 0 && v <= inputLimits::large))
+        )
         {
+            const std::string range
+            (
+                positive
+              ? "it must be finite and >= 0, at most "
+              + Foam::name(inputLimits::large)
+              : "it must be finite"
+            );
             FatalIOErrorInFunction(d)
                 << "Entry " << key << " = " << v << " in "
-                << d.name().c_str() << " is out of range: "
-                << (positive ? "it must be finite and >= 0" : "it must be finite")
+                << d.name().c_str() << " is out of range: " << range.c_str()
                 << exit(FatalIOError);
         }
         return v;
@@ -104,6 +114,21 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
             )
           : get(d, "Gamma", false);
 
+        if (!(mag(Gamma) <= inputLimits::fieldMax))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry "
+                << (
+                       fromWorkFunctions
+                     ? "workFunction (with cutoffDistance and the particles'"
+                       " workFunction)"
+                     : "Gamma"
+                   )
+                << " of wall patch " << name << " in " << d.name().c_str()
+                << " gives Gamma = " << Gamma << " V/m: out of range, |Gamma|"
+                << " must be at most " << inputLimits::fieldMax << " V/m"
+                << exit(FatalIOError);
+        }
         walls_.set(patchi, new triboCharging(kappaC, Gamma));
 
         Info<< "    tribocharging on wall patch " << name
@@ -383,11 +408,64 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
         }
     }
 
+    // A transfer that charges a parcel beyond the largest mean surface
+    // field (inputLimits.H) comes from a charging efficiency no material
+    // has: stop before its forces overflow
+    forAll(contacts, k)
+    {
+        const ParcelContact<parcelType>& c = contacts[k];
+        if (dq_[k] != 0)
+        {
+            checkCharge(*c.pA, c);
+            if (c.pB && !c.referred)
+            {
+                checkCharge(*c.pB, c);
+            }
+        }
+    }
+
     // Forget the areas of contacts that ended
     for (parcelType& p : this->owner())
     {
         p.chargingRecords().update();
     }
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::checkCharge
+(
+    const parcelType& p,
+    const ParcelContact<parcelType>& c
+) const
+{
+    const scalar E = mag(surfaceField(p));
+    if (E <= inputLimits::fieldMax)
+    {
+        return;
+    }
+    const triboCharging& law = c.pB ? pp_() : walls_[c.patchi];
+    const dictionary& coeffs = this->coeffDict();
+    FatalIOErrorInFunction(coeffs)
+        << "Contact charging gave parcel (origProc " << p.origProc()
+        << ", origId " << p.origId() << ") the charge q = " << p.q()
+        << " C, a mean surface field |q|/(eps0 S) = " << E << " V/m above "
+        << inputLimits::fieldMax << " V/m, beyond any material: the"
+        << " charging entries kappaC = " << law.kappaC() << " and Gamma = "
+        << law.Gamma() << " V/m of "
+        << (
+               c.pB
+             ? word("particles")
+             : word
+               (
+                   "walls/"
+                 + this->owner().mesh().boundaryMesh()[c.patchi].name()
+               )
+           )
+        << " in " << coeffs.name().c_str() << ", or the contact (impact"
+        << " speed |U| = " << mag(p.U()) << " m/s, overlap "
+        << c.contact.overlap << " m), are out of range"
+        << exit(FatalIOError);
 }
 
 

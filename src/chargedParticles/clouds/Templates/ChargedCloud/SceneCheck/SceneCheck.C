@@ -335,10 +335,14 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
             qp2Measured,
             coulombCollision::agitationEstimate(k, qAbsMean, mMean, n/vol)
         );
-        dtCoulomb = coulombCollision::maxTimeStep
-        (
-            k, qAbsMean, qAbsMean, mMean, mMean, qp2
-        );
+        // Charges below ~1e-160 C square to 0: no deflection to resolve
+        if (qp2 > 0 && k*sqr(qAbsMean) > 0)
+        {
+            dtCoulomb = coulombCollision::maxTimeStep
+            (
+                k, qAbsMean, qAbsMean, mMean, mMean, qp2
+            );
+        }
     }
 
     // Summary, with 4 significant digits (the run's precision is for
@@ -459,10 +463,14 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
             q2 += sqr(qi);
         }
         q2 /= n;
-        Info<< "plasma period "
-            << 2*constant::mathematical::pi
-              *Foam::sqrt(eps0*epsMedium*mMean/((n/vol)*q2))
-            << " s; ";
+        // Charges below ~1e-160 C square to 0: no period to give
+        const scalar omegaP2 = (n/vol)*q2/(eps0*epsMedium*mMean);
+        if (omegaP2 > 0)
+        {
+            Info<< "plasma period "
+                << 2*constant::mathematical::pi/Foam::sqrt(omegaP2)
+                << " s; ";
+        }
     }
     if (tauDrag.size())
     {
