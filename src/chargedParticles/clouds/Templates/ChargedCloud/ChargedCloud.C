@@ -246,6 +246,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
 
         if (readFields)
         {
+            this->checkWrittenFields();
             parcelType::readFields(*this);
             this->deleteLostParticles();
         }

@@ -10,6 +10,9 @@
 #include "subCycleTime.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -62,6 +65,182 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     cloud.calculateForces();
 
     inPlace(parcelType::trackingData::tpVelocityHalfStep);
+}
+
+
+template<class CloudType>
+Foam::IOobject Foam::EllipsoidCloud<CloudType>::fieldsRecordIO
+(
+    const word& timeName
+) const
+{
+    // Beside the cloud's uniform properties: written also without parcels,
+    // where the parcels' directory is not
+    return IOobject
+    (
+        "cloudFieldsRecord",
+        timeName,
+        "uniform"/cloud::prefix/this->name(),
+        this->db(),
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::writeFieldsRecord
+(
+    const bool complete
+) const
+{
+    IOdictionary record(fieldsRecordIO(this->time().timeName()));
+    record.add("complete", Switch(complete));
+    record.add("nProcs", Pstream::nProcs());
+    if (complete)
+    {
+        const fileName dir =
+            this->time().timePath()/cloud::prefix/this->name();
+        DynamicList<word> files;
+        for (const fileName& f : readDir(dir, fileName::FILE))
+        {
+            files.append(f);
+        }
+        Foam::sort(files);
+        record.add("files", wordList(files));
+        record.add("nParcels", label(this->size()));
+    }
+    record.regIOobject::writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::checkWrittenFields() const
+{
+    const Time& time = this->time();
+    const word timeName = time.timeName();
+    const fileName cloudDir = time.timePath()/cloud::prefix/this->name();
+
+    // The record of a time: absent, copied by decomposePar/reconstructPar
+    // (another number of processors: not about these files), incomplete,
+    // or complete with the files missing from it
+    enum class state { none, foreign, cut, missing, complete };
+    auto read = [&](const word& t, wordList& missing)
+    {
+        const fileName file = fieldsRecordIO(t).objectPath();
+        if (!isFile(file))
+        {
+            return state::none;
+        }
+        // A record cut while it was written reads as cut
+        dictionary record;
+        const bool throwing = FatalIOError.throwExceptions(true);
+        try
+        {
+            IFstream is(file);
+            record = dictionary(is);
+        }
+        catch (const Foam::error&)
+        {
+            record.clear();
+        }
+        FatalIOError.throwExceptions(throwing);
+
+        const label nProcs = record.lookupOrDefault<label>("nProcs", -1);
+        if (nProcs < 0 || !record.found("complete"))
+        {
+            return state::cut;
+        }
+        if (nProcs != Pstream::nProcs())
+        {
+            return state::foreign;
+        }
+        if (!record.get<Switch>("complete") || !record.found("files"))
+        {
+            return state::cut;
+        }
+        DynamicList<word> absent;
+        for (const word& f : record.get<wordList>("files"))
+        {
+            const fileName path = time.path()/t/cloud::prefix/this->name()/f;
+            if (!isFile(path) || fileSize(path) == 0)
+            {
+                absent.append(f);
+            }
+        }
+        missing = absent;
+        return missing.empty() ? state::complete : state::missing;
+    };
+
+    wordList missing;
+    const state s = read(timeName, missing);
+    if
+    (
+        s == state::complete
+     || s == state::foreign
+     || (s == state::none && isDir(cloudDir))
+    )
+    {
+        return;
+    }
+
+    // The latest earlier time whose record is complete
+    word earlier;
+    const instantList times = Time::findTimes(time.path(), time.constant());
+    forAllReverse(times, i)
+    {
+        wordList m;
+        if
+        (
+            times[i].value() < time.value()
+         && read(times[i].name(), m) == state::complete
+        )
+        {
+            earlier = times[i].name();
+            break;
+        }
+    }
+
+    // No record and no parcels' directory: a time without parcels, unless
+    // an earlier one has a record (every write leaves one, also without
+    // parcels): then the run stopped before it wrote them
+    if (s == state::none && earlier.empty())
+    {
+        return;
+    }
+
+    FatalErrorInFunction
+        << "The parcels of cloud " << this->name() << " at time " << timeName
+        << " were not completely written (" << cloudDir << "): ";
+    if (s == state::missing)
+    {
+        FatalError<< "missing or empty " << missing;
+    }
+    else
+    {
+        FatalError
+            << "the run stopped while writing them (killed?)";
+    }
+    FatalError<< ". Restart from ";
+    if (earlier.empty())
+    {
+        FatalError<< "an earlier time";
+    }
+    else
+    {
+        FatalError
+            << "time " << earlier << ", the latest complete one"
+            << " (system/controlDict: startFrom startTime; startTime "
+            << earlier << ";)";
+    }
+    FatalError<< ", or delete time " << timeName << exit(FatalError);
 }
 
 
@@ -199,6 +378,7 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 
     if (this->solution().active() && readFields)
     {
+        checkWrittenFields();
         parcelType::readFields(*this);
         this->deleteLostParticles();
     }
@@ -501,6 +681,17 @@ void Foam::EllipsoidCloud<CloudType>::motion
             p.trackDrift();
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::writeFields() const
+{
+    // Also without parcels: a time without a record after one with a
+    // record was cut before its parcels were written
+    writeFieldsRecord(false);
+    CloudType::writeFields();
+    writeFieldsRecord(true);
 }
 
 
