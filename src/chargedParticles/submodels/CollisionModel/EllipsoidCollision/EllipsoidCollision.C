@@ -347,7 +347,8 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
     // Bookkeeping: the elastic energy changes by Fe vn dt, the contact
     // force does -Fn vn dt of work: the difference (Fn - Fe) vn dt >= 0
     // is dissipated (dashpot, or the released energy under the no-tension
-    // cut)
+    // cut). On the first and last step of a contact Fe carries the onset
+    // correction, so there the books hold to that correction's impulse
     scalar dissipated = (Fn - Fe)*vn*dt;
     scalar elastic = 0.4*kHertz*delta*delta32;
 
