@@ -10,8 +10,10 @@
 #    runs with every parcel;
 #  - the solver killed (SIGKILL) at random moments of a run writing every
 #    step, eight times: each restart from the latest time either continues
-#    with every parcel or stops with the message above, never silently with
-#    fewer parcels or defaults.
+#    with every parcel, stops with the message above, or stops with
+#    OpenFOAM's error naming a file of the cut time (a kill while the
+#    cloud's output properties were written), never silently with fewer
+#    parcels or defaults.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/base"
@@ -115,6 +117,12 @@ do
             && grep -q "Current number of parcels *= 2" log.earlier$k \
             || badKill="$badKill $k(earlier $earlier failed)"
         sed -i -E "s/^startFrom .*/startFrom       latestTime;/" system/controlDict
+        rm -rf "$latest"
+    elif grep -q "FOAM FATAL" log.restart$k && grep -q "/$latest/" log.restart$k
+    then
+        # OpenFOAM's own error on a file of the cut time (e.g. the cloud's
+        # output properties, written after the parcels): named, not silent
+        outcomes="$outcomes named"
         rm -rf "$latest"
     else
         badKill="$badKill $k(rc, unnamed)"
