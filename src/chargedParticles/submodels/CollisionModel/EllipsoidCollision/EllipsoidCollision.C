@@ -380,7 +380,8 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
         }
 
         const scalar kT = 8*law.Gstar*sqrtRdelta;
-        const scalar springBefore = 0.5*kT*magSqr(xi);
+        const vector xi0 = xi;
+        const scalar springBefore = 0.5*kT*magSqr(xi0);
         xi += vt*dt;
         const scalar etaT =
             2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(kT*mStar);
@@ -389,14 +390,24 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
         const scalar FtMax = law.mu*Fn;
         if (FtMag2 > sqr(FtMax))
         {
-            // Slip: friction limit, spring length consistent with it
+            // Slip: the friction limit carries the spring and the dashpot
+            // in parallel, both in series with the slider, so the dashpot
+            // acts at the spring's rate: Ft = -kT xi - etaT (xi - xi0)/dt.
+            // The slip (trial minus new spring length) is then
+            // (Ft - Ft_trial)/(kT + etaT/dt), opposite to Ft, and the
+            // slider, the dashpot and the spring's discrete update each
+            // dissipate >= 0. (Setting -kT xi = Ft instead puts the
+            // dashpot's share into the spring: energy from nothing.)
+            // Undamped (etaT = 0) this is xi = -Ft/kT
             Ft *= FtMax/Foam::sqrt(FtMag2);
-            xi = kT > VSMALL ? -Ft/kT : vector(Zero);
+            const scalar kRate = kT + etaT/dt;
+            xi = kRate > VSMALL ? (etaT/dt*xi0 - Ft)/kRate : vector(Zero);
         }
         F += Ft;
 
         // Bookkeeping: the work taken from the relative motion, -Ft.vt dt,
-        // goes into the spring or is dissipated (dashpot, slip)
+        // goes into the spring or is dissipated (dashpot, slip): >= 0 by
+        // the slip rule above
         const scalar springAfter = 0.5*kT*magSqr(xi);
         dissipated += -(Ft & vt)*dt - (springAfter - springBefore);
         elastic += springAfter;
@@ -1663,18 +1674,19 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     const label nNeeded = max(label(1), label(std::ceil(deltaT/dtC - 1e-9)));
 
     // The count in use moves only as far as it must: up to what the
-    // collisions need, down to a quarter above it. A sub-step that changes
+    // collisions need, down to 5 % above it. A sub-step that changes
     // while contacts last breaks the leapfrog's symmetry (a 2 % change
     // within an elastic impact at 50 steps costs ~3e-5 of its energy,
     // where a fixed step keeps it to 1e-7); the count that the fastest
-    // parcel needs changes from step to step, a band of a quarter keeps
-    // the count, and a falling need lowers it in small steps
+    // parcel needs jitters from step to step, which the band absorbs at
+    // 20 sub-cycles and more. A wider band costs its width in every step
+    // of a settled bed (a quarter: 4 sub-cycles where 3 suffice)
     const label n =
         subCycles_ > 0
       ? min
         (
             max(subCycles_, nNeeded),
-            label(std::ceil(1.25*nNeeded))
+            label(std::floor(1.05*nNeeded))
         )
       : nNeeded;
     subCycles_ = n;
