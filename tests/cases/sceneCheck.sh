@@ -138,8 +138,8 @@ sed -i -E '0,/q 0;/s//q -1e-9;/' constant/parcels
 setEndTime 1e-4
 cp -r "$work/duct" "$work/ductDirect"
 run blockMesh blockMesh && run solver chargedDPMFoam || fail "sceneCheck.duct (solver failed)"
-check sceneCheck.ductBreakdown "(-1 nC on a 1 x 0.5 x 0.5 mm ellipsoid in air)" \
-    warned log.solver "the largest surface field.*exceeds sceneCheck/breakdownField"
+check sceneCheck.ductBreakdown "(-1 nC on a 1 x 0.5 x 0.5 mm ellipsoid in air: the parcel, its charge and the limit named)" \
+    warned log.solver "the largest surface field .* V/m, of parcel (origProc 0, origId 0) at (.*) with q = -1e-09 C, exceeds sceneCheck/breakdownField = 3e+06 V/m (1 parcel(s) above)"
 check sceneCheck.ductMeshQuiet "(meshPoisson: no model warning)" \
     bash -c "! grep -q 'Scene check: electrostaticsModel' log.solver"
 cd "$work/ductDirect" || exit 1

@@ -13,6 +13,8 @@
 #include "IOdictionary.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "cutoffPairs.H"
+#include "ellipsoidContact.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -65,6 +67,123 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     cloud.calculateForces();
 
     inPlace(parcelType::trackingData::tpVelocityHalfStep);
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
+{
+    // The parcels injected this step have not moved yet (age 0)
+    DynamicList<point> xAll(this->size());
+    DynamicList<const parcelType*> pAll(this->size());
+    DynamicList<point> xNew;
+    DynamicList<label> newOfAll(this->size());
+    scalar rMax = 0;
+    for (const parcelType& p : *this)
+    {
+        if (p.age() == 0)
+        {
+            newOfAll.append(xNew.size());
+            xNew.append(p.centre());
+        }
+        else
+        {
+            newOfAll.append(-1);
+        }
+        xAll.append(p.centre());
+        pAll.append(&p);
+        rMax = max(rMax, cmptMax(p.semiAxes()));
+    }
+    if (xNew.empty())
+    {
+        return;
+    }
+
+    // Each new parcel against every parcel within two bounding radii:
+    // bounding spheres, then the bodies' overlap
+    label nOverlaps = 0;
+    scalar worst = -1;
+    const parcelType* worstA = nullptr;
+    const parcelType* worstB = nullptr;
+    scalar worstOverlap = 0, worstSemiAxis = 0;
+    List<label> allOfNew(xNew.size());
+    forAll(newOfAll, i)
+    {
+        if (newOfAll[i] >= 0)
+        {
+            allOfNew[newOfAll[i]] = i;
+        }
+    }
+    forPairsWithinCutoff
+    (
+        xNew, xAll, 2*rMax*(1 + SMALL), -1,
+        [&](const label t, const label s, const vector& r, const scalar r2)
+        {
+            // A pair of new parcels once, a parcel not with itself
+            if (newOfAll[s] >= 0 && newOfAll[s] <= t)
+            {
+                return;
+            }
+            const parcelType& pA = *pAll[allOfNew[t]];
+            const parcelType& pB = *pAll[s];
+            if (r2 >= sqr(cmptMax(pA.semiAxes()) + cmptMax(pB.semiAxes())))
+            {
+                return;
+            }
+            const scalar b =
+                min(cmptMin(pA.semiAxes()), cmptMin(pB.semiAxes()));
+
+            // Coincident centres have no contact normal: the deepest overlap
+            scalar overlap = 2*b;
+            if (r2 > 0)
+            {
+                const ellipsoidContact::result c =
+                    pA.isSphere() && pB.isSphere()
+                  ? ellipsoidContact::sphereSphere
+                    (
+                        xNew[t], pA.semiAxes().x(), xAll[s], pB.semiAxes().x()
+                    )
+                  : ellipsoidContact::contact
+                    (
+                        ellipsoid(pA.semiAxes(), xNew[t], pA.orientation()),
+                        ellipsoid(pB.semiAxes(), xAll[s], pB.orientation())
+                    );
+                overlap = c.contact ? c.overlap : 0;
+            }
+
+            // Touching to round-off (1e-6 b) is not an overlap
+            if (overlap > max(maxInjectionOverlap_, 1e-6)*b)
+            {
+                ++nOverlaps;
+                if (overlap/b > worst)
+                {
+                    worst = overlap/b;
+                    worstA = &pA;
+                    worstB = &pB;
+                    worstOverlap = overlap;
+                    worstSemiAxis = b;
+                }
+            }
+        }
+    );
+
+    if (nOverlaps)
+    {
+        const dictionary& solDict = this->solution().dict();
+        FatalIOErrorInFunction(solDict)
+            << nOverlaps << " parcel pair(s) overlap at their injection at t = "
+            << this->db().time().value() << " s, the deepest: parcel (origProc "
+            << worstA->origProc() << ", origId " << worstA->origId() << ") at "
+            << worstA->centre() << " and parcel (origProc "
+            << worstB->origProc() << ", origId " << worstB->origId() << ") at "
+            << worstB->centre() << " overlap by " << worstOverlap << " m = "
+            << worst << " of the smaller semi-axis " << worstSemiAxis
+            << " m, more than maxInjectionOverlap = " << maxInjectionOverlap_
+            << " in " << solDict.name().c_str() << " allows (range [0, 0.5];"
+            << " overlaps up to it are pushed apart by the contact, which"
+            << " releases their elastic energy). Check the injection models'"
+            << " positions and sizes" << exit(FatalIOError);
+    }
 }
 
 
@@ -278,11 +397,23 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     gatherer_(nullptr),
     kickInMove_(false),
     contactTime_(0),
+    maxInjectionOverlap_(0),
     conservativeCoupling_(false)
 {
     if (this->solution().active())
     {
         const dictionary& solDict = this->solution().dict();
+        maxInjectionOverlap_ =
+            solDict.template lookupOrDefault<scalar>("maxInjectionOverlap", 0);
+        if (!(maxInjectionOverlap_ >= 0 && maxInjectionOverlap_ <= 0.5))
+        {
+            FatalIOErrorInFunction(solDict)
+                << "Entry maxInjectionOverlap = " << maxInjectionOverlap_
+                << " in " << solDict.name().c_str() << " is out of range: it"
+                << " must be in [0, 0.5] (the largest overlap of a parcel"
+                << " injected into another, as a fraction of the pair's"
+                << " smallest semi-axis; default 0)" << exit(FatalIOError);
+        }
         const word coupling
         (
             solDict.template lookupOrDefault<word>
@@ -644,6 +775,11 @@ void Foam::EllipsoidCloud<CloudType>::motion
                 << " nParticle, massTotal and parcelBasisType in "
                 << inj.name().c_str() << exit(FatalIOError);
         }
+    }
+
+    if (this->collision().active())
+    {
+        checkInjectionOverlaps();
     }
 
     const label nSubCycles = this->collision().nSubCycles();

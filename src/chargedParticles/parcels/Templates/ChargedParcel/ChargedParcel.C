@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ChargedParcel.H"
+#include "inputLimits.H"
+#include "OStringStream.H"
 #include "transform.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -43,6 +45,93 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 
 template<class ParcelType>
 template<class TrackCloudType>
+void Foam::ChargedParcel<ParcelType>::checkFinite
+(
+    const TrackCloudType& cloud,
+    const bool afterMove
+) const
+{
+    using inputLimits::finite;
+
+    // The first term that is not finite, with where it comes from (a few
+    // comparisons per parcel and kick)
+    auto value = [](const vector& v)
+    {
+        OStringStream os;
+        os << v;
+        return os.str();
+    };
+    string term;
+    if (afterMove)
+    {
+        if (!finite(this->U()))
+        {
+            term = "the velocity U = " + value(this->U()) + " after the"
+                " drift: from the carrier's forces (particleForces, e.g."
+                " drag and gravity)";
+        }
+        else if (!finite(this->angularMomentum()))
+        {
+            term = "the angular momentum " + value(this->angularMomentum())
+              + " after the drift: from the carrier's forces"
+                " (particleForces)";
+        }
+    }
+    else
+    {
+        const word es =
+            "electrostaticsModel " + cloud.electrostatics().type();
+        if (!finite(fE_))
+        {
+            term = "the electrostatic force fE = " + value(fE_) + ": from "
+              + es;
+        }
+        else if (!finite(tE_))
+        {
+            term = "the electrostatic torque tE = " + value(tE_) + ": from "
+              + es;
+        }
+        else if (!finite(this->f()))
+        {
+            term = "the contact force f = " + value(this->f()) + ": from"
+                " collisionModel " + cloud.collision().type();
+        }
+        else if (!finite(this->torque()))
+        {
+            term = "the contact torque " + value(this->torque()) + ": from"
+                " collisionModel " + cloud.collision().type();
+        }
+        else if (!std::isfinite(q_))
+        {
+            term = "the charge q = " + Foam::name(q_) + ": from the contact"
+                " charging (triboChargingModel "
+              + cloud.triboCharging().type() + ")";
+        }
+        else if (!finite(this->U()) || !finite(this->angularMomentum()))
+        {
+            term = "the velocity U = " + value(this->U()) + " or the angular"
+                " momentum " + value(this->angularMomentum())
+              + " before the kick";
+        }
+    }
+    if (term.empty())
+    {
+        return;
+    }
+
+    FatalErrorInFunction
+        << "Parcel (origProc " << this->origProc() << ", origId "
+        << this->origId() << ") at " << this->position() << ", t = "
+        << cloud.db().time().value() << " s (time index "
+        << cloud.db().time().timeIndex() << "): " << term.c_str()
+        << ", is not finite. The run stops before it reaches the parcels'"
+        << " files. Check the model named and its entries, and the time step"
+        << exit(FatalError);
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
 bool Foam::ChargedParcel<ParcelType>::move
 (
     TrackCloudType& cloud,
@@ -60,11 +149,13 @@ bool Foam::ChargedParcel<ParcelType>::move
         // the current position (the first one of a step may come with the
         // move, see EllipsoidParcel::move); the base layer adds the
         // contact force and torque
+        checkFinite(cloud, false);
         this->U() += (0.5*trackTime/this->mass())*fE_;
         this->angularMomentum() += (0.5*trackTime)*tE_;
     }
 
     const bool keep = ParcelType::move(cloud, td, trackTime);
+    checkFinite(cloud, true);
 
     // A parcel removed on a boundary face (escaped through an open patch)
     // takes its charge out of the domain: book it for the charge balance

@@ -121,6 +121,7 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     DynamicList<scalar> myQ, myEps, myM, myAMin, myAMax, myArea, myTau;
     DynamicList<symmTensor> mySinv;
     DynamicList<vector> myU;
+    DynamicList<label> myOrigProc, myOrigId;
     scalar volParticles = 0;
     const scalarField& muc = cloud_.mu().primitiveField();
     for (const parcelType& p : cloud_)
@@ -132,6 +133,8 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         myEps.append(p.epsilonR());
         myM.append(p.mass());
         myU.append(p.U());
+        myOrigProc.append(p.origProc());
+        myOrigId.append(p.origId());
         myAMin.append(cmptMin(s));
         myAMax.append(cmptMax(s));
         myArea.append(ellipsoid::surfaceArea(s));
@@ -162,6 +165,8 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     const List<scalar> area(gatherOnMaster<scalar>(myArea));
     const List<symmTensor> Sinv(gatherOnMaster<symmTensor>(mySinv));
     const List<scalar> tauDrag(gatherOnMaster<scalar>(myTau));
+    const List<label> origProc(gatherOnMaster<label>(myOrigProc));
+    const List<label> origId(gatherOnMaster<label>(myOrigId));
     const label n = x.size();
 
     // Wall and cyclic patches, wall faces of this processor
@@ -188,6 +193,7 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     label nCharged = 0, nPositive = 0, nNegative = 0, nPolarisable = 0;
     scalar qMin = GREAT, qMax = -GREAT, qNet = 0, qAbsMean = 0, mMean = 0;
     scalar Es = 0, aspectMin = GREAT, aspectMax = 0;
+    label iEs = -1, nAboveBreakdown = 0;
     scalar epsMin = GREAT, epsMax = 0;
     boundBox chargedBox;
     boolList polarisable(n, false);
@@ -202,7 +208,13 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         aspectMax = max(aspectMax, aMax[i]/aMin[i]);
         epsMin = min(epsMin, eps[i]);
         epsMax = max(epsMax, eps[i]);
-        Es = max(Es, mag(q[i])/(eps0*area[i]));
+        const scalar Esi = mag(q[i])/(eps0*area[i]);
+        if (Esi > Es)
+        {
+            Es = Esi;
+            iEs = i;
+        }
+        nAboveBreakdown += (Esi > breakdownField_);
         if (q[i] != 0)
         {
             ++nCharged;
@@ -552,9 +564,14 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         warnings.append
         (
             "the largest surface field q/(eps0 S) = " + Foam::name(Es)
-          + " V/m exceeds sceneCheck/breakdownField = "
-          + Foam::name(breakdownField_) + " V/m: the medium would discharge."
-            " Check the parcels' q (or constantProperties/q0)."
+          + " V/m, of parcel (origProc " + Foam::name(origProc[iEs])
+          + ", origId " + Foam::name(origId[iEs]) + ") at "
+          + Foam::name(x[iEs]) + " with q = " + Foam::name(q[iEs])
+          + " C, exceeds sceneCheck/breakdownField = "
+          + Foam::name(breakdownField_) + " V/m ("
+          + Foam::name(nAboveBreakdown) + " parcel(s) above): the medium"
+            " would discharge. Check the parcels' q (or"
+            " constantProperties/q0)."
         );
     }
     if
