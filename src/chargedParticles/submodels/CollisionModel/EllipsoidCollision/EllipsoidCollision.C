@@ -1344,6 +1344,11 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
             dissipatedEnergy()
         );
         this->owner().outputProperties().set("collisionSubCycles", subCycles_);
+        this->owner().outputProperties().set
+        (
+            "collisionSubCyclesBelowNeed",
+            stepsBelowNeed_
+        );
     }
 
     if (nBufferWarnings_ > 0 && nBufferWarningsTotal_ > 5)
@@ -1439,6 +1444,14 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         owner.outputProperties().template lookupOrDefault<label>
         (
             "collisionSubCycles",
+            0
+        )
+    ),
+    stepsBelowNeed_
+    (
+        owner.outputProperties().template lookupOrDefault<label>
+        (
+            "collisionSubCyclesBelowNeed",
             0
         )
     ),
@@ -1673,22 +1686,28 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     const scalar dtC = minTc/resolutionSteps_;
     const label nNeeded = max(label(1), label(std::ceil(deltaT/dtC - 1e-9)));
 
-    // The count in use moves only as far as it must: up to what the
-    // collisions need, down to 5 % above it. A sub-step that changes
-    // while contacts last breaks the leapfrog's symmetry (a 2 % change
-    // within an elastic impact at 50 steps costs ~3e-5 of its energy,
-    // where a fixed step keeps it to 1e-7); the count that the fastest
-    // parcel needs jitters from step to step, which the band absorbs at
-    // 20 sub-cycles and more. A wider band costs its width in every step
-    // of a settled bed (a quarter: 4 sub-cycles where 3 suffice)
-    const label n =
-        subCycles_ > 0
-      ? min
-        (
-            max(subCycles_, nNeeded),
-            label(std::floor(1.05*nNeeded))
-        )
-      : nNeeded;
+    // The count rises at once to the need and falls to it only after the
+    // need has stayed below it for twice as long as the fastest contact
+    // lasts (resolutionSteps/count steps; twice for the slower, longer
+    // contacts of ellipsoids). A sub-step that changes while
+    // contacts last breaks the leapfrog's symmetry, and the need falls
+    // within every contact as its parcels slow down: a head-on elastic
+    // impact at 50 steps, its count lowered from 13 to 6 and back within
+    // the contact, lost 2.6e-3 of its energy (1e-7 at a fixed step). A
+    // settled bed comes down to its need within a few steps
+    label n = nNeeded;
+    if (subCycles_ > nNeeded)
+    {
+        const label hold = 2*resolutionSteps_/subCycles_ + 1;
+        if (++stepsBelowNeed_ < hold)
+        {
+            n = subCycles_;
+        }
+    }
+    if (n != subCycles_ || n == nNeeded)
+    {
+        stepsBelowNeed_ = 0;
+    }
     subCycles_ = n;
 
     if (debug || this->owner().mesh().time().timeIndex() % 100 == 1)
