@@ -12,6 +12,7 @@ smaller radius, epsilonR 2, 10 and 1000, like and opposite charges.
                             [--far none|directCoulomb|cutoffCoulomb] [--pairs N]
   bemClusterStatic.py compare <case> [--ratio 2] [--tol005 0.02] [--tol01 0.01]
       -> markdown table, PASS/FAIL line
+  both: [--gaps 0.05,0.1,0.2,0.5] [--kappas 2,10,1000] (the same for both)
 
 --far directCoulomb: the far field counts the pair's point charges, which
 the cluster must take out again; --far cutoffCoulomb (rCut 1e-4 m, below
@@ -140,7 +141,13 @@ if __name__ == "__main__":
     ap.add_argument("--pairs", type=int, default=None)
     ap.add_argument("--tol005", type=float, default=0.02)
     ap.add_argument("--tol01", type=float, default=0.01)
+    ap.add_argument("--gaps", help="comma-separated gaps/a1 (default 0.05,0.1,0.2,0.5)")
+    ap.add_argument("--kappas", help="comma-separated epsilonR (default 2,10,1000)")
     a = ap.parse_args()
+    if a.gaps:
+        GAPS = tuple(float(x) for x in a.gaps.split(","))
+    if a.kappas:
+        KAPPAS = tuple(float(x) for x in a.kappas.split(","))
     if a.what == "write":
         sys.exit(write(a.case, a.ratio*A1, a.patches, a.far, a.pairs))
     sys.exit(compare(a.case, a.ratio*A1, a.tol005, a.tol01))

@@ -435,6 +435,7 @@ Foam::BemNearField<CloudType>::BemNearField
         }()
     ),
     stats_(),
+    gmresIterationsTotal_(0),
     dipoleTime_(0),
     clusterTime_(0),
     setupTime_(0),
@@ -510,6 +511,7 @@ Foam::BemNearField<CloudType>::BemNearField
     multipoleNeighbours_(nf.multipoleNeighbours_),
     controls_(nf.controls_),
     stats_(),
+    gmresIterationsTotal_(0),
     dipoleTime_(0),
     clusterTime_(0),
     setupTime_(0),
@@ -1236,6 +1238,7 @@ void Foam::BemNearField<CloudType>::correct
         allGatherBoundCharge(sigmaB, moments);
     }
     remeshOffset_ += remeshDelta;
+    gmresIterationsTotal_ += stats_.gmresIterations;
     lastSigmaB_.swap(sigmaB);
     usedMoments_.swap(lastMoments_);
     lastMoments_.swap(moments);
@@ -1284,7 +1287,8 @@ void Foam::BemNearField<CloudType>::info() const
     Info<< "    BEM clusters                    = " << stats_.nClusters
         << " (" << stats_.nInClusters << " parcels, largest "
         << stats_.maxClusterSize << "; " << stats_.nSolved << " solved), "
-        << stats_.gmresIterations << " GMRES iterations (residual "
+        << stats_.gmresIterations << " GMRES iterations ("
+        << gmresIterationsTotal_ << " since the start; residual "
         << stats_.gmresResidual << "), " << stats_.nShapes << " meshes ("
         << std::round(stats_.cacheBytes/1048576) << " MB)" << nl;
     if (this->contactWeight() != 1)
