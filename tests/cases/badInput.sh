@@ -48,25 +48,9 @@ badCase()
     cp -r "$work/$base" "$dir"
     (
         cd "$dir" || exit 1
-        $PY - "$file" "$pattern" "$repl" "$@" <<'PYEOF' || exit 1
-import re, sys
-p = sys.argv[1]
-s = open(p).read()
-for pattern, repl in zip(sys.argv[2::2], sys.argv[3::2]):
-    s, n = re.subn(pattern, repl, s, count=1)
-    if n != 1:
-        sys.exit("pattern not found: " + pattern)
-open(p, "w").write(s)
-PYEOF
+        regexEdit "$file" "$pattern" "$repl" "$@" || exit 1
         $solver > log.solver 2>&1
-        rc=$?
-        if [ "$rc" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.solver \
-            && grep -Eq "$expect" log.solver
-        then
-            pass "badInput.$name (exit $rc: $(grep -Eo "$expect" log.solver | head -1))"
-        else
-            fail "badInput.$name (exit $rc; expected a FatalIOError matching '$expect', see $dir/log.solver)"
-        fi
+        expectFatalIO "badInput.$name" "$dir/log.solver" $? "$expect"
     )
 }
 

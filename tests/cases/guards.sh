@@ -22,23 +22,6 @@ cd "$work/prolates" || exit 1
 run blockMesh blockMesh || fail "guards.mesh (blockMesh failed)"
 setEndTime 1e-4
 
-# edited <dir> <file> <pattern> <replacement> [...]: regex edits, each once
-edited()
-{
-    local dir="$1" file="$2"
-    shift 2
-    $PY - "$dir/$file" "$@" <<'PYEOF'
-import re, sys
-p = sys.argv[1]
-s = open(p).read()
-for pattern, repl in zip(sys.argv[2::2], sys.argv[3::2]):
-    s, n = re.subn(pattern, repl, s, count=1)
-    if n != 1:
-        sys.exit("pattern not found: " + pattern)
-open(p, "w").write(s)
-PYEOF
-}
-
 # 5e-05 and 0.1 to the last digits of 17
 near5em5='(5e-05|5\.0000000[0-9]*e-05|4\.9999999[0-9]*e-05)'
 near0p1='(0\.1|0\.10000000[0-9]*|0\.09999999[0-9]*)'
@@ -50,18 +33,11 @@ overlapCase()
     shift 3
     rm -rf "$dir"
     cp -r "$work/$base" "$dir"
-    edited "$dir" constant/cloudProperties "$@" || { fail "guards.$name (edit)"; return; }
+    regexEdit "$dir/constant/cloudProperties" "$@" || { fail "guards.$name (edit)"; return; }
     (
         cd "$dir" || exit 1
         chargedParticleFoam > log.solver 2>&1
-        rc=$?
-        if [ "$rc" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.solver \
-            && grep -Eq "$expect" log.solver
-        then
-            pass "guards.$name (exit $rc: $(grep -Eo "$expect" log.solver | head -1))"
-        else
-            fail "guards.$name (exit $rc; expected a FatalIOError matching '$expect', see $dir/log.solver)"
-        fi
+        expectFatalIO "guards.$name" "$dir/log.solver" $? "$expect"
     )
 }
 
@@ -91,7 +67,7 @@ overlapCase overlappingProlates prolates \
 # Opt-in: 10 % of a radius at rest, allowed; the contact pushes them apart
 dir="$work/optIn"
 rm -rf "$dir"; cp -r "$work/spheres" "$dir"
-edited "$dir" constant/cloudProperties \
+regexEdit "$dir/constant/cloudProperties" \
     'position \(-0.55e-3 0 0\); U \( 0.5 0 0\)' 'position (-0.475e-3 0 0); U (0 0 0)' \
     'position \( 0.55e-3 0 0\); U \(-0.5 0 0\)' 'position (0.475e-3 0 0); U (0 0 0)' \
     'coupled +false;' 'coupled false; maxInjectionOverlap 0.15;' \

@@ -173,14 +173,7 @@ expectBad()
     (
         cd "$work/$1" || exit 1
         chargedParticleFoam > log.solver 2>&1
-        rc=$?
-        if [ "$rc" -ne 0 ] && grep -q "FOAM FATAL IO ERROR" log.solver \
-            && grep -Eq "$2" log.solver
-        then
-            pass "imageCloud.bad.$1 (exit $rc: $(grep -Eo "$2" log.solver | head -1))"
-        else
-            fail "imageCloud.bad.$1 (exit $rc, expected a FatalIOError matching '$2', see $work/$1/log.solver)"
-        fi
+        expectFatalIO "imageCloud.bad.$1" "$work/$1/log.solver" $? "$2"
     )
 }
 (cd curved && run blockMesh blockMesh) || fail "imageCloud.bad.curved (blockMesh failed)"

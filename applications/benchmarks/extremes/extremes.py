@@ -77,6 +77,23 @@ def sh(cmd, cwd, log, env=None, timeout=None):
             return -999
 
 
+def solve(case, app="chargedParticleFoam", log="log.solver"):
+    """Run a solver in case: (exit status, its log, wall time [s])."""
+    t0 = time.time()
+    rc = sh([app], case, log)
+    return rc, open(os.path.join(case, log)).read(), time.time() - t0
+
+
+def run_copy(case, name):
+    """case/runs/<name> with the case's system and constant (its mesh)."""
+    c = os.path.join(case, "runs", name)
+    shutil.rmtree(c, ignore_errors=True)
+    os.makedirs(c)
+    for d in ("system", "constant"):
+        shutil.copytree(os.path.join(case, d), os.path.join(c, d))
+    return c
+
+
 def copy_tutorial(name, dest):
     shutil.rmtree(dest, ignore_errors=True)
     shutil.copytree(os.path.join(TOP, "tutorials", name), dest)
@@ -143,10 +160,7 @@ def case_pour(work, fast):
             control(c, endTime=end, writeInterval=int(round(end/1e-4)))
             sh(["blockMesh"], c, "log.blockMesh")
             sh([PY, "makeParcels.py", str(n)], c, "log.makeParcels")
-            t0 = time.time()
-            rc = sh(["chargedParticleFoam"], c, "log.chargedParticleFoam")
-            wall = time.time() - t0
-            log = open(os.path.join(c, "log.chargedParticleFoam")).read()
+            rc, log, wall = solve(c, log="log.chargedParticleFoam")
             if rc != 0:
                 row("pour", "aspect ratio", ar, "stops: " + fatal(log)[:200], f"{wall:.0f} s")
                 check(f"pour.{label}{N}", False, "solver failed")
@@ -179,25 +193,21 @@ def case_steps(work, fast):
     sh(["blockMesh"], c0, "log.blockMesh")
     for N in ((5, 50) if fast else (5, 10, 20, 50, 100)):
         for e in (0.9, 1.0):
-            c = os.path.join(c0, "runs", f"N{N}e{e}")
-            shutil.rmtree(c, ignore_errors=True)
-            os.makedirs(c)
-            for d in ("system", "constant"):
-                shutil.copytree(os.path.join(c0, d), os.path.join(c, d))
+            c = run_copy(c0, f"N{N}e{e}")
             edit(os.path.join(c, "constant/cloudProperties"),
                  r"^( +)e( +)[0-9.]+;", rf"\g<1>e\g<2>{e};",
                  r"collisionResolutionSteps +\d+;", f"collisionResolutionSteps {N};")
             control(c, deltaT="1e-5")
-            rc = sh(["chargedParticleFoam"], c, "log.chargedParticleFoam")
+            rc, log, _ = solve(c, log="log.chargedParticleFoam")
             if rc != 0:
-                row("steps", "steps per collision", N, "stops", fatal(open(os.path.join(c, "log.chargedParticleFoam")).read()))
+                row("steps", "steps per collision", N, "stops", fatal(log))
                 check(f"steps.N{N}e{e}", False, "solver failed")
                 continue
             out = subprocess.run([PY, os.path.join(c0, "headOnCollision.py"), c, "--e", str(e),
                                   "--E", "1e8", "--nu", "0.3", "--tol", "1"],
                                  capture_output=True, text=True).stdout
             m = re.search(r"restitution\S* \(measured ([0-9.e+-]+), input [0-9.e+-]+, error ([0-9.e+-]+)", out)
-            sub = re.search(r"(\d+) move-collide subCycles", open(os.path.join(c, "log.chargedParticleFoam")).read())
+            sub = re.search(r"(\d+) move-collide subCycles", log)
             if not m:
                 row("steps", "steps per collision", N, "no result", out[-200:])
                 check(f"steps.N{N}e{e}", False, "no restitution measured")
@@ -214,17 +224,13 @@ def case_chi(work, fast):
     sh(["blockMesh"], c0, "log.blockMesh")
     runs = []
     for chi, dt in (("1", 1e-7), ("0.001", 1.6e-6)):
-        c = os.path.join(c0, "runs", f"chi{chi}")
-        shutil.rmtree(c, ignore_errors=True)
-        os.makedirs(c)
-        for d in ("system", "constant"):
-            shutil.copytree(os.path.join(c0, d), os.path.join(c, d))
+        c = run_copy(c0, f"chi{chi}")
         edit(os.path.join(c, "constant/cloudProperties"),
              r"^( +stiffnessRatio +)[0-9.e-]+;", rf"\g<1>{chi};")
         control(c, deltaT=dt, writeInterval=round(2.2e-3/dt))
-        rc = sh(["chargedParticleFoam"], c, "log.chargedParticleFoam")
+        rc, log, _ = solve(c, log="log.chargedParticleFoam")
         if rc != 0:
-            row("chi", "stiffness ratio chi", chi, "stops", fatal(open(os.path.join(c, "log.chargedParticleFoam")).read())[:200])
+            row("chi", "stiffness ratio chi", chi, "stops", fatal(log)[:200])
             check(f"chi{chi}", False, "solver failed")
             return
         runs.append(c)
@@ -271,8 +277,7 @@ def case_coulomb(work, fast):
         shutil.copytree(c0, c, ignore=shutil.ignore_patterns("probe"))
         steps = int(math.ceil(tEnd/dt))
         control(c, deltaT=f"{dt:.6e}", endTime=f"{steps*dt:.6e}", writeInterval=steps)
-        rc = sh(["chargedParticleFoam"], c, "log.solver")
-        log = open(os.path.join(c, "log.solver")).read()
+        rc, log, _ = solve(c)
         warned = "exceeds the Coulomb-collision step" in log
         if rc != 0:
             row("coulomb", "time step / Coulomb-collision step", f"{f:g}", "stops: " + fatal(log)[:200], "")
@@ -314,8 +319,7 @@ def case_breakdown(work, fast):
             value = f"{f:g} x breakdown of air (q = {qv:.3g} C)"
         edit(os.path.join(c, "constant/cloudProperties"),
              r"shape +\(2 1 1\);", f"shape (2 1 1); q0 {qv:.6g};")
-        rc = sh(["chargedDPMFoam"], c, "log.solver")
-        log = open(os.path.join(c, "log.solver")).read()
+        rc, log, _ = solve(c, "chargedDPMFoam")
         warned = "exceeds sceneCheck/breakdownField" in log
         outcome = ("stops: " + fatal(log)[:300]) if rc else ("works, warned" if warned else "works")
         row("breakdown", "surface field q/(eps0 S)", value, outcome, "")
@@ -342,10 +346,7 @@ def case_bem(work, fast):
         subprocess.run([PY, tool, "write", c, *opts], check=True, env=env)
         control(c, endTime="1e-6", writeInterval=1)
         sh(["blockMesh"], c, "log.blockMesh")
-        t0 = time.time()
-        rc = sh(["chargedParticleFoam"], c, "log.solver")
-        wall = time.time() - t0
-        log = open(os.path.join(c, "log.solver")).read()
+        rc, log, wall = solve(c)
         if rc != 0:
             row("bem", "epsilonR", kappa, "stops: " + fatal(log)[:200], "")
             check(f"bem.{kappa}", False, "solver failed")
@@ -389,10 +390,7 @@ def case_long(work, fast):
     control(c, deltaT=dt, endTime=f"{steps*dt:.6e}", writeInterval=steps)
     edit(os.path.join(c, "constant/cloudProperties"), r"^(\s*)solution\s*\n(\s*)\{", r"\g<1>solution\n\g<2>{\n        logInterval 10000;")
     sh(["blockMesh"], c, "log.blockMesh")
-    t0 = time.time()
-    rc = sh(["chargedParticleFoam"], c, "log.solver")
-    wall = time.time() - t0
-    log = open(os.path.join(c, "log.solver")).read()
+    rc, log, wall = solve(c)
     if rc != 0:
         row("long", "time steps", steps, "stops: " + fatal(log)[:200], "")
         check("long.run", False, "solver failed")
