@@ -79,17 +79,15 @@ void Foam::ChargedParcel<ParcelType>::checkFinite
     }
     else
     {
-        const word es =
-            "electrostaticsModel " + cloud.electrostatics().type();
         if (!finite(fE_))
         {
-            term = "the electrostatic force fE = " + value(fE_) + ": from "
-              + es;
+            term = "the electrostatic force fE = " + value(fE_) + ": from"
+                " electrostaticsModel " + cloud.electrostatics().type();
         }
         else if (!finite(tE_))
         {
-            term = "the electrostatic torque tE = " + value(tE_) + ": from "
-              + es;
+            term = "the electrostatic torque tE = " + value(tE_) + ": from"
+                " electrostaticsModel " + cloud.electrostatics().type();
         }
         else if (!finite(this->f()))
         {
