@@ -1455,6 +1455,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             0
         )
     ),
+    subCyclesTimeIndex_(-1),
     listXi_(),
     listTouching_(),
     keepRecords_(false),
@@ -1695,6 +1696,14 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     // impact at 50 steps, its count lowered from 13 to 6 and back within
     // the contact, lost 2.6e-3 of its energy (1e-7 at a fixed step). A
     // settled bed comes down to its need within a few steps
+    // Once per time step (the scene check asks too)
+    const label timeIndex = this->owner().mesh().time().timeIndex();
+    if (timeIndex == subCyclesTimeIndex_ && subCycles_ > 0)
+    {
+        return subCycles_;
+    }
+    subCyclesTimeIndex_ = timeIndex;
+
     label n = nNeeded;
     if (subCycles_ > nNeeded)
     {
