@@ -35,6 +35,7 @@ outcomes that must hold; the table is then written to <work>/extremes.md
 only. Needs the project's solvers on PATH (. etc/bashrc).
 """
 import argparse
+import glob
 import math
 import os
 import re
@@ -283,7 +284,7 @@ def case_coulomb(work, fast):
             row("coulomb", "time step / Coulomb-collision step", f"{f:g}", "stops: " + fatal(log)[:200], "")
             check(f"coulomb.{f:g}", False, "solver failed")
             continue
-        h = sorted(__import__("glob").glob(os.path.join(c, "postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat")))
+        h = sorted(glob.glob(os.path.join(c, "postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat")))
         data = np.loadtxt(h[0], comments="#", ndmin=2)
         a, b = data[data[:, 2] == 0], data[data[:, 2] == 1]
         r = np.linalg.norm(b[:, 3:6] - a[:, 3:6], axis=1)

@@ -73,7 +73,22 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
 {
-    // The parcels injected this step have not moved yet (age 0)
+    // The parcels injected this step have not moved yet (age 0); most
+    // steps inject none: no positions gathered then
+    bool anyNew = false;
+    for (const parcelType& p : *this)
+    {
+        if (p.age() == 0)
+        {
+            anyNew = true;
+            break;
+        }
+    }
+    if (!anyNew)
+    {
+        return;
+    }
+
     DynamicList<point> xAll(this->size());
     DynamicList<const parcelType*> pAll(this->size());
     DynamicList<point> xNew;
@@ -93,10 +108,6 @@ void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
         xAll.append(p.centre());
         pAll.append(&p);
         rMax = max(rMax, cmptMax(p.semiAxes()));
-    }
-    if (xNew.empty())
-    {
-        return;
     }
 
     // Each new parcel against every parcel within two bounding radii:
