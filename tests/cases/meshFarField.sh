@@ -7,8 +7,12 @@
 # with the shape radius; the shaped correction beats Rasera's
 # Eq. 31 (cellCentroid); 2 processors equal serial; a tri-periodic box
 # (cyclic patches, neutralising background) vs the periodic Ewald kernel; an
-# applied field from electrode potentials; bad input.
+# applied field from electrode potentials; bad input. The exact reference of
+# the grounded pipe (tests/tools/groundedCylinder.py, used by
+# applications/benchmarks/meshFarField/curvedCavities.py) checks itself.
 . "$(dirname "$0")/common.sh.inc"
+
+$PY "$tools/groundedCylinder.py" --selftest
 
 $PY - "$work" "$top" <<'PYEOF'
 import os, sys

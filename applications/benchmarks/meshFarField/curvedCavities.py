@@ -13,9 +13,19 @@ projected onto the sphere) and the exact field of point charges inside it
                                  other charges and all images (its own
                                  included), eps_r = 1
 
-    curvedCavities.py [--n 12 16 24] [--radius 0.2] [--work DIR]
+    pipe_blockmesh(a, length, n) blockMeshDict body: a pipe of radius a
+                                 about the z axis, an O-grid (inner square
+                                 with n x n cells, four outer blocks with
+                                 arc edges), cyclic ends; patch walls
+
+The pipe's exact field is tests/tools/groundedCylinder.py (the grounded
+infinite cylinder, periodic along z; two independent series, checked by its
+--selftest).
+
+    curvedCavities.py [--cavity sphere|pipe] [--n 12 16 24] [--radius 0.2]
+                      [--work DIR]
         prints the force error of meshPoisson for single charges at several
-        distances from the centre and a pair of opposite charges
+        distances from the centre (the axis) and a pair of opposite charges
 """
 import argparse
 import os
@@ -25,6 +35,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tests", "tools"))
+from groundedCylinder import field as cylinder_field   # noqa: E402
 K_COULOMB = 1.0/(4.0*np.pi*8.8541878128e-12)
 
 
@@ -97,32 +109,95 @@ def kelvin_field(x, q, a):
     return K_COULOMB*E
 
 
+def pipe_blockmesh(a, length, n):
+    """blockMeshDict body: a pipe of radius a about the z axis, 0 <= z <=
+    length, meshed as an O-grid (an inner square of half-size 0.5 a/sqrt(2)
+    with n x n cells, four outer blocks with arc edges and about the same
+    radial spacing), cyclic ends; patch walls."""
+    s = 0.5*a/np.sqrt(2.0)
+    c = a/np.sqrt(2.0)
+    m = max(1, int(round(n*(a - 0.5*a)/(2*s))))
+    nz = max(1, int(round(n*length/(2*s))))
+    layer = [(-s, -s), (s, -s), (s, s), (-s, s), (-c, -c), (c, -c), (c, c), (-c, c)]
+    f = lambda p: "(%r %r %r)" % tuple(float(t) for t in p)
+    verts = "\n".join("    " + f((x, y, z)) for z in (0.0, length) for x, y in layer)
+    hexes = [("0 1 2 3", (n, n, nz)), ("4 5 1 0", (n, m, nz)), ("5 6 2 1", (n, m, nz)),
+             ("6 7 3 2", (n, m, nz)), ("7 4 0 3", (n, m, nz))]
+    up = lambda h: " ".join(str(int(v) + 8) for v in h.split())
+    bl = "\n".join(f"    hex ({h} {up(h)}) ({k[0]} {k[1]} {k[2]}) simpleGrading (1 1 1)"
+                   for h, k in hexes)
+    arcs = []
+    for z, o in ((0.0, 0), (length, 8)):
+        for (i, j), mid in zip(((4, 5), (5, 6), (6, 7), (7, 4)),
+                               ((0, -a), (a, 0), (0, a), (-a, 0))):
+            arcs.append(f"    arc {i + o} {j + o} {f((mid[0], mid[1], z))}")
+    walls = " ".join(f"({i} {j} {j + 8} {i + 8})" for i, j in ((4, 5), (5, 6), (6, 7), (7, 4)))
+    ends = lambda o: " ".join("(" + " ".join(str(int(v) + o) for v in h.split()) + ")"
+                              for h, _ in hexes)
+    return f"""
+scale 1;
+vertices
+(
+{verts}
+);
+blocks
+(
+{bl}
+);
+edges
+(
+""" + "\n".join(arcs) + f"""
+);
+boundary
+(
+    walls {{ type wall; faces ({walls}); }}
+    z0 {{ type cyclic; neighbourPatch z1; faces ({ends(0)}); }}
+    z1 {{ type cyclic; neighbourPatch z0; faces ({ends(8)}); }}
+);
+"""
+
+
 def main():
     from farFieldCase import FarFieldCase
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, nargs="+", default=[12, 16, 24])
     ap.add_argument("--radius", type=float, default=0.2)
-    ap.add_argument("--work", default=os.path.join(HERE, "runs", "sphere"))
+    ap.add_argument("--cavity", choices=("sphere", "pipe"), default="sphere")
+    ap.add_argument("--work", default=None)
     a = ap.parse_args()
+    work = a.work or os.path.join(HERE, "runs", a.cavity)
     rng = np.random.default_rng(5)
+    pipe = a.cavity == "pipe"
+    # the pipe: radius 1, period 2 along z, charges about z = 1
+    length = 2.0
+    centre = np.array([0, 0, 1.0]) if pipe else np.zeros(3)
     cases = []
     for rr in (0.0, 0.3, 0.6, 0.8, 0.9):
         u = rng.normal(size=3)
-        cases.append((f"single r = {rr}", np.array([rr*u/np.linalg.norm(u)]), np.array([1e-9])))
-    u = rng.normal(size=3); u /= np.linalg.norm(u)
-    cases.append(("pair 0.2 apart at r = 0.5", np.array([0.5*u, 0.5*u + 0.2*np.cross(u, [0, 0, 1])/np.linalg.norm(np.cross(u, [0, 0, 1]))]), np.array([1e-9, -1e-9])))
-    print(f"| case | |E exact| [V/m] | " + " | ".join(f"error n = {n}" for n in a.n) + " |")
+        if pipe:
+            u[2] = 0
+        cases.append((f"single r = {rr}", np.array([centre + rr*u/np.linalg.norm(u)]), np.array([1e-9])))
+    u = rng.normal(size=3)
+    if pipe:
+        u[2] = 0
+    u /= np.linalg.norm(u)
+    side = np.cross(u, [1, 0, 0] if pipe else [0, 0, 1])
+    side /= np.linalg.norm(side)
+    cases.append(("pair 0.2 apart at r = 0.5", np.array([centre + 0.5*u, centre + 0.5*u + 0.2*side]),
+                  np.array([1e-9, -1e-9])))
+    print("| case | |E exact| [V/m] | " + " | ".join(f"error n = {n}" for n in a.n) + " |")
     print("|---|--:|" + "--:|"*len(a.n))
     for name, x, q in cases:
-        ref = kelvin_field(x, q, 1.0)
+        ref = cylinder_field(x, q, 1.0, length) if pipe else kelvin_field(x, q, 1.0)
         errs = []
         for n in a.n:
-            c = FarFieldCase(os.path.join(a.work, f"{name.replace(' ', '_')}_{n}"), x, q, 1.0, n,
-                             "meshPoisson", f"radius {a.radius};", blockMesh=sphere_blockmesh(1.0, n))
+            mesh = pipe_blockmesh(1.0, length, n) if pipe else sphere_blockmesh(1.0, n)
+            c = FarFieldCase(os.path.join(work, f"{name.replace(' ', '_')}_{n}"), x, q, 1.0, n,
+                             "meshPoisson", f"radius {a.radius};", blockMesh=mesh)
             c.run()
             E = c.fields()[0]
             scale = np.linalg.norm(ref, axis=1)
-            if np.all(scale == 0):
+            if np.all(scale < 1e-12*K_COULOMB*1e-9):
                 errs.append(f"{np.abs(E).max()/(K_COULOMB*1e-9/a.radius**2):.1e} (abs)")
             else:
                 errs.append(f"{np.max(np.linalg.norm(E - ref, axis=1)/scale):.2e}")
