@@ -97,7 +97,9 @@ rho = float(re.search(r"rho0\s+([0-9.e+-]+);", text).group(1))
 R, delta = 0.5e-3, 0.05e-3
 m = rho*4/3*np.pi*R**3
 Estar = E/(2*(1 - nu**2))
-# Hertz: elastic energy (8/15) E* sqrt(R*) delta^(5/2), R* = R/2
+# Hertz: elastic energy (8/15) E* sqrt(R*) delta^(5/2), R* = R/2 (the
+# integral of the Hertz force (4/3) E* sqrt(R*) delta^(3/2), Johnson 1985
+# Eq. 4.23)
 energy = 8/15*Estar*np.sqrt(R/2)*delta**2.5
 vMax = np.sqrt(energy/m)          # both spheres at v: m v^2 = energy
 gap = np.linalg.norm(x[1] - x[0]) - 2*R
