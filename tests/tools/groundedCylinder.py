@@ -18,9 +18,12 @@ independent series of the same Green's function:
                   eigenfunctions of the cross-section,
                   (1/(2 pi eps0 a^2)) sum_m eps_m cos(m dphi) sum_n
                       J_m(k rho) J_m(k rho') exp(-k |dz|)/(k J_{m+1}(j_mn)^2),
-                  k = j_mn/a; converges fast for |dz| of order a, used for
-                  the periodic copies (their free-space parts alone would
-                  not converge).
+                  k = j_mn/a (derived here: the point source expanded in
+                  the cross-section's Fourier-Bessel functions, norm
+                  a^2/2 J_{m+1}(j_mn)^2, times the one-dimensional Green's
+                  function exp(-k |dz|)/(2k)); converges fast for |dz| of
+                  order a, used for the periodic copies (their free-space
+                  parts alone would not converge).
 
 SI units: x, a in m, q in C, E in V/m.
 
@@ -48,12 +51,7 @@ def image_field(xt, xs, a):
     regular part -(1/(2 pi^2)) sum_m eps_m cos(m dphi) int_0^inf cos(k dz)
     I_m(k rho) I_m(k rho') K_m(k a)/I_m(k a) dk, times 1/eps0). Returns
     E/(q/eps0)."""
-    import warnings
-    from scipy import integrate, special
-    # QUADPACK warns of round-off where a mode's integral is already at
-    # round-off against the sum; the self-test's two-series check measures
-    # the accuracy
-    warnings.simplefilter("ignore", integrate.IntegrationWarning)
+    from scipy import special
     rho, phi, z = np.hypot(xt[0], xt[1]), np.arctan2(xt[1], xt[0]), xt[2]
     rs, ps = np.hypot(xs[0], xs[1]), np.arctan2(xs[1], xs[0])
     dphi, dz = phi - ps, z - xs[2]
@@ -70,8 +68,9 @@ def image_field(xt, xs, a):
                 w = np.exp(k*(rho + rs - 2*a))*Is*Ka/Ia
             if not np.isfinite(w*Ir) or (Ir == 0 and m > 0):
                 # K_m(k a) overflows or I_m underflows at k << m: the
-                # leading small-argument terms, I_m(kr) I_m(ks) K_m(ka)/
-                # I_m(ka) = (r s/a^2)^m/(2m) (relative error O(k^2 a^2/m))
+                # leading small-argument terms (Abramowitz & Stegun 9.6.7,
+                # 9.6.9), I_m(kr) I_m(ks) K_m(ka)/I_m(ka) = (r s/a^2)^m/(2m)
+                # (relative error O(k^2 a^2/m))
                 P = (rho*rs/a**2)**m/(2*m)
                 dP = 0.5*(rs/a**2)*(rho*rs/a**2)**(m - 1)    # dP/drho
                 return [dP, P, -P*k][part]
@@ -82,10 +81,7 @@ def image_field(xt, xs, a):
                 return w*Ir
             return -w*Ir*k   # d/dz (times sin(k dz))
         top = 60.0/max(2*a - rho - rs, 1e-3*a)
-        # oscillatory weights cos(k dz), sin(k dz) by QUADPACK's QAWO
-        vals = [integrate.quad(g, 0, top, args=(p,), weight="sin" if p == 2 else "cos", wvar=dz,
-                               limit=400, epsabs=0, epsrel=1e-10)[0]
-                for p in range(3)]
+        vals = [_oscillatory(g, top, p, dz) for p in range(3)]
         c = -em/(2*np.pi**2)
         dEr = -c*np.cos(m*dphi)*vals[0]
         dEp = c*m*np.sin(m*dphi)*vals[1]/rho if rho > 0 else 0.0
@@ -96,6 +92,19 @@ def image_field(xt, xs, a):
             break
     cp, sp = np.cos(phi), np.sin(phi)
     return np.array([Er*cp - Ep*sp, Er*sp + Ep*cp, Ez])
+
+
+def _oscillatory(g, top, part, dz):
+    """int_0^top g(k, part) cos(k dz) dk (sin for part 2) by QUADPACK's QAWO.
+    Its round-off warnings (a mode's integral already at round-off against
+    the sum) are silenced here only; the self-test's two-series check
+    measures the accuracy."""
+    import warnings
+    from scipy import integrate
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", integrate.IntegrationWarning)
+        return integrate.quad(g, 0, top, args=(part,), weight="sin" if part == 2 else "cos",
+                              wvar=dz, limit=400, epsabs=0, epsrel=1e-10)[0]
 
 
 def mode_field(xt, xs, a, nModes=200):

@@ -40,6 +40,11 @@ from groundedCylinder import field as cylinder_field   # noqa: E402
 K_COULOMB = 1.0/(4.0*np.pi*8.8541878128e-12)
 
 
+def _point(p):
+    """A blockMeshDict point (x y z), exact to the last bit."""
+    return "(%r %r %r)" % tuple(float(t) for t in p)
+
+
 def sphere_blockmesh(a, n):
     c = 0.3*a
     m = max(1, int(round(n*(a - c)/(2*c))))
@@ -48,9 +53,8 @@ def sphere_blockmesh(a, n):
              (-c, -c, c), (c, -c, c), (c, c, c), (-c, c, c)]
     outer = [(-v, -v, -v), (v, -v, -v), (v, v, -v), (-v, v, -v),
              (-v, -v, v), (v, -v, v), (v, v, v), (-v, v, v)]
-    f = lambda p: "(%r %r %r)" % tuple(float(t) for t in p)
-    verts = "\n".join("    " + f(p) for p in inner) + "\n" \
-        + "\n".join("    project %s (sphere)" % f(p) for p in outer)
+    verts = "\n".join("    " + _point(p) for p in inner) + "\n" \
+        + "\n".join("    project %s (sphere)" % _point(p) for p in outer)
     # centre block, then one block per face of the inner cube (inner face
     # to projected outer face; right-handed, the third direction radial)
     blocks = [("0 1 2 3 4 5 6 7", (n, n, n))] + [(h, (n, n, m)) for h in (
@@ -116,11 +120,11 @@ def pipe_blockmesh(a, length, n):
     radial spacing), cyclic ends; patch walls."""
     s = 0.5*a/np.sqrt(2.0)
     c = a/np.sqrt(2.0)
-    m = max(1, int(round(n*(a - 0.5*a)/(2*s))))
+    # radial cells: the outer blocks span 0.5 a along the diagonal
+    m = max(1, int(round(n*0.5*a/(2*s))))
     nz = max(1, int(round(n*length/(2*s))))
     layer = [(-s, -s), (s, -s), (s, s), (-s, s), (-c, -c), (c, -c), (c, c), (-c, c)]
-    f = lambda p: "(%r %r %r)" % tuple(float(t) for t in p)
-    verts = "\n".join("    " + f((x, y, z)) for z in (0.0, length) for x, y in layer)
+    verts = "\n".join("    " + _point((x, y, z)) for z in (0.0, length) for x, y in layer)
     hexes = [("0 1 2 3", (n, n, nz)), ("4 5 1 0", (n, m, nz)), ("5 6 2 1", (n, m, nz)),
              ("6 7 3 2", (n, m, nz)), ("7 4 0 3", (n, m, nz))]
     up = lambda h: " ".join(str(int(v) + 8) for v in h.split())
@@ -130,7 +134,7 @@ def pipe_blockmesh(a, length, n):
     for z, o in ((0.0, 0), (length, 8)):
         for (i, j), mid in zip(((4, 5), (5, 6), (6, 7), (7, 4)),
                                ((0, -a), (a, 0), (0, a), (-a, 0))):
-            arcs.append(f"    arc {i + o} {j + o} {f((mid[0], mid[1], z))}")
+            arcs.append(f"    arc {i + o} {j + o} {_point((mid[0], mid[1], z))}")
     walls = " ".join(f"({i} {j} {j + 8} {i + 8})" for i, j in ((4, 5), (5, 6), (6, 7), (7, 4)))
     ends = lambda o: " ".join("(" + " ".join(str(int(v) + o) for v in h.split()) + ")"
                               for h, _ in hexes)
