@@ -17,7 +17,8 @@ oppositely charged parcels attract and stick into aggregates, to t =
     bem-pc    + nearField bem with neighbours pointCharges
     bem-gap2  + nearField bem with clusterGap 2
     bem-gap4  + nearField bem with clusterGap 4
-    bem-rnear4d + nearField bem with rNear 4 bounding diameters (8 a)
+    bem-rnear2d + nearField bem with rNear 2 bounding diameters (4 a;
+              the default is 4, 8 a)
     allBem    + nearField bem with clusterGap 1e6: every parcel in one
               cluster (all-particle BEM, the paper's approach)
 
@@ -36,7 +37,7 @@ properties) and for the others.
     bemClusters.py [--n 300] [--phi 0.04] [--q 5e-11] [--form 0.2]
                    [--aspect 2] [--steps 20] [--all-steps 3] [--rounds 3]
                    [--rcut 0] [--runs dir] [--reuse] [--no-accuracy]
-                   [--no-cost] [--bem-rungs bem,bem-pc,bem-gap2,bem-gap4,bem-rnear4d]
+                   [--no-cost] [--bem-rungs bem,bem-pc,bem-gap2,bem-gap4,bem-rnear2d]
                    [--acc-steps 2]
 """
 import argparse
@@ -165,11 +166,11 @@ NEAR = {
     "bem-gap2": "nearField { type bem; clusterGap 2; }",
     "bem-gap4": "nearField { type bem; clusterGap 4; }",
     # rNear (neighbours seen as multipoles, isolated parcels' dipole
-    # pairs) 4 bounding diameters instead of the default 2
-    "bem-rnear4d": "nearField { type bem; rNear %r; }" % (8*A),
+    # pairs) 2 bounding diameters instead of the default 4
+    "bem-rnear2d": "nearField { type bem; rNear %r; }" % (4*A),
     "allBem": "nearField { type bem; clusterGap 1e6; }",
 }
-BEM_RUNGS = ("bem", "bem-pc", "bem-gap2", "bem-gap4", "bem-rnear4d")
+BEM_RUNGS = ("bem", "bem-pc", "bem-gap2", "bem-gap4", "bem-rnear2d")
 
 
 def box_side(n, phi):

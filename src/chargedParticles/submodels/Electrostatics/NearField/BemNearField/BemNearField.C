@@ -403,7 +403,7 @@ Foam::BemNearField<CloudType>::BemNearField
     CloudType& owner
 )
 :
-    InducedDipoleNearField<CloudType>(dict, owner),
+    InducedDipoleNearField<CloudType>(dict, owner, 4),
     clusterGap_(dict.template lookupOrDefault<scalar>("clusterGap", 1)),
     nPatches_(dict.template lookupOrDefault<label>("nPatches", 1200)),
     isolated_

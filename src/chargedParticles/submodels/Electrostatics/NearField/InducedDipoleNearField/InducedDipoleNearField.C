@@ -86,11 +86,13 @@ template<class CloudType>
 Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
 (
     const dictionary& dict,
-    CloudType& owner
+    CloudType& owner,
+    const scalar rNearDiameters
 )
 :
     NearFieldModel<CloudType>(dict, owner),
     rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
+    rNearDiameters_(rNearDiameters),
     tolerance_(readPositive("tolerance", 1e-8)),
     maxIter_(readLabel("maxIter", 500, 1)),
     contactWeight_
@@ -106,8 +108,12 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
     residual_(0)
 {
     Info<< "    Induced dipoles within rNear = "
-        << (rNearGiven_ > 0 ? Foam::name(rNearGiven_) + " m" : "2 bounding"
-            " diameters of the largest polarisable parcel").c_str()
+        << (
+               rNearGiven_ > 0
+             ? std::string(Foam::name(rNearGiven_)) + " m"
+             : std::string(Foam::name(rNearDiameters_))
+             + " bounding diameters of the largest polarisable parcel"
+           ).c_str()
         << ", tolerance " << tolerance_ << endl;
 }
 
@@ -213,8 +219,13 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
             << "Entry rNear = " << rNear_ << " in "
             << this->dict().name().c_str() << " must be below half the"
             << " periodic box edge " << cmptMin(L)
-            << (rNearGiven_ > 0 ? "" : " (the default, 2 bounding diameters"
-                " of the largest polarisable parcel: give a smaller one)")
+            << (
+                   rNearGiven_ > 0
+                 ? std::string()
+                 : " (the default, " + std::string(Foam::name(rNearDiameters_))
+                 + " bounding diameters of the largest polarisable parcel:"
+                   " give a smaller one)"
+               ).c_str()
             << exit(FatalIOError);
     }
 
