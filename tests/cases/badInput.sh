@@ -212,6 +212,9 @@ badCase lightSpeedParcel 'd 1e-4; rho 1000; q  1e-12' 'd 1e-9; rho 1000; q  1e-1
 badCase hugeMeshPoissonRadius 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e300; }' \
     'Entry radius = 1[.0-9]*e\+300 in .* is out of range: it must be finite and > 0, in \[1[.0-9]*e-09, '
+badCase negativeNonOrthCorrectors 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nNonOrthogonalCorrectors -1; }' \
+    'Entry nNonOrthogonalCorrectors = -1 in .* must be >= 0'
 badCase repeatedInjector '(\);\s*\}\s*)\}' '\1    twin { $twoSpheres; }\n    }' \
     "The parcels' positions must differ: check the injection models 2\(twoSpheres twin\)"
 base=carrier

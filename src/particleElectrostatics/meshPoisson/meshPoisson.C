@@ -16,6 +16,8 @@
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
 #include "ListListOps.H"
+#include "unitConversion.H"
+#include "polyMeshTools.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -135,6 +137,45 @@ Foam::scalar Foam::meshPoisson::readRadius() const
             << ")" << exit(FatalIOError);
     }
     return r;
+}
+
+
+Foam::label Foam::meshPoisson::readNonOrthCorrectors() const
+{
+    const word key("nNonOrthogonalCorrectors");
+    if (!coeffs_.found(key))
+    {
+        // One corrector wherever the correction is not zero to round-off
+        return maxNonOrthogonality_ > 1e-6 ? 1 : 0;
+    }
+    const label n = coeffs_.get<label>(key);
+    if (n < 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry " << key << " = " << n << " in "
+            << coeffs_.name().c_str() << " must be >= 0 (re-solves per"
+            << " evaluation with the Laplacian's non-orthogonal correction"
+            << " updated)" << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+Foam::scalar Foam::meshPoisson::maxNonOrthogonality() const
+{
+    // Cosine between each internal or coupled face's area vector and the
+    // line joining its cells' centres (OpenFOAM's checkMesh measure)
+    const scalar cosMin =
+        gMin
+        (
+            polyMeshTools::faceOrthogonality
+            (
+                mesh_,
+                mesh_.faceAreas(),
+                mesh_.cellCentres()
+            )
+        );
+    return Foam::acos(max(scalar(-1), min(scalar(1), cosMin)));
 }
 
 
@@ -720,6 +761,8 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         coeffs.lookupOrDefault<word>("interpolation", "cell")
     ),
     solveInterval_(coeffs.lookupOrDefault<label>("solveInterval", 1)),
+    maxNonOrthogonality_(maxNonOrthogonality()),
+    nNonOrthCorr_(readNonOrthCorrectors()),
     nEvaluations_(0),
     solved_(false),
     periodicShifts_(),
@@ -762,10 +805,10 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         ),
         -fvc::grad(Phi_)
     ),
-    wallRMax_(0),
     shapeFresh_(false),
     farStart_(-1),
     farValid_(false),
+    wallRMax_(0),
     nRealSources_(-1),
     binOrigin_(Zero),
     binSize_(1),
@@ -827,7 +870,10 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
              ? word("field averaged over the shapes")
              : "interpolation " + interpolationScheme_
            )
-        << ", solved every " << solveInterval_ << " evaluation(s)";
+        << ", solved every " << solveInterval_ << " evaluation(s)"
+        << ", " << nNonOrthCorr_ << " non-orthogonal corrector(s) (largest"
+        << " non-orthogonality " << radToDeg(maxNonOrthogonality_)
+        << " deg)";
     if (periodicShifts_.size())
     {
         Info<< ", periodic translations " << periodicShifts_;
@@ -870,13 +916,18 @@ void Foam::meshPoisson::solve()
            /dimensionedScalar("V", dimVolume, gSum(mesh_.V()));
     }
 
-    fvScalarMatrix PhiEqn
-    (
-        fvm::laplacian(eps, Phi_) + rho
-    );
-    // Only used when no patch fixes the potential
-    PhiEqn.setReference(Pstream::master() ? 0 : -1, 0);
-    PhiEqn.solve();
+    // The non-orthogonal correction is explicit (from the Phi of the last
+    // solve): re-solve with it updated
+    for (label corr = 0; corr <= nNonOrthCorr_; ++corr)
+    {
+        fvScalarMatrix PhiEqn
+        (
+            fvm::laplacian(eps, Phi_) + rho
+        );
+        // Only used when no patch fixes the potential
+        PhiEqn.setReference(Pstream::master() ? 0 : -1, 0);
+        PhiEqn.solve();
+    }
 
     E_ = -fvc::grad(Phi_);
     if (correction_ == correctionType::cellCentroid)
