@@ -527,7 +527,13 @@ void Foam::meshPoisson::addWallImages
         {
             continue;
         }
-        // Distinct planes (normal, distance, sign), nearest first, <= 3
+        // Distinct planes (normal, distance, sign), nearest first, <= 3.
+        // Faces whose normals are within 45 degrees are one wall, imaged
+        // in the plane of its nearest face (a curved wall's local tangent
+        // plane): the faces of a smooth wall near a charge differ by the
+        // mesh's angular spacing, and one image per face would count the
+        // wall several times; walls meeting at a corner stay distinct
+        const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
         pn.clear();
         pd.clear();
         ps.clear();
@@ -538,12 +544,14 @@ void Foam::meshPoisson::addWallImages
             bool known = false;
             forAll(pn, k)
             {
-                if
-                (
-                    (pn[k] & wallN_[f]) > 1 - 1e-9
-                 && mag(pd[k] - d) < 1e-9*R
-                )
+                if ((pn[k] & wallN_[f]) > oneWallCos)
                 {
+                    if (d < pd[k])
+                    {
+                        pn[k] = wallN_[f];
+                        pd[k] = d;
+                        ps[k] = wallSign_[f];
+                    }
                     known = true;
                     break;
                 }
