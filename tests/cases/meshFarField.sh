@@ -7,9 +7,9 @@
 # with the shape radius; the shaped correction beats Rasera's
 # Eq. 31 (cellCentroid); 2 processors equal serial; a tri-periodic box
 # (cyclic patches, neutralising background) vs the periodic Ewald kernel; an
-# applied field from electrode potentials; bad input. The exact reference of
-# the grounded pipe (tests/tools/groundedCylinder.py, used by
-# applications/benchmarks/meshFarField/curvedCavities.py) checks itself.
+# applied field from electrode potentials; bad input; a charge whose shape
+# is cut by a curved wall (grounded sphere vs Kelvin's image, grounded pipe
+# vs tests/tools/groundedCylinder.py, which checks itself first).
 . "$(dirname "$0")/common.sh.inc"
 
 $PY "$tools/groundedCylinder.py" --selftest
@@ -184,4 +184,24 @@ report("badSolver", ok, "no Phi solver in fvSolution: clear error")
 report("badInterpolation",
        fails_with("bad3", "radius 0.3; interpolation cellPoint;", "Entry interpolation", "cellCentroid only"),
        "interpolation with the shaped correction: FatalIOError naming the entry")
+
+# 9. Curved walls meshed as users mesh them: a charge 0.1 radii from the
+#    wall of a grounded sphere (projected blocks, vs Kelvin's image) and of
+#    a grounded pipe (O-grid, vs the exact cylinder series), its shape
+#    (radius 0.2) cut by the wall and imaged in the nearest face's plane;
+#    one non-orthogonal corrector (the default on these meshes)
+sys.path.insert(0, top + "/applications/benchmarks/meshFarField")
+import curvedCavities as cc
+for cavity in ("sphere", "pipe"):
+    u = np.array([1.0, 2.0, 2.0])/3 if cavity == "sphere" else np.array([0.6, 0.8, 0.0])
+    centre = np.array([0, 0, 1.0]) if cavity == "pipe" else np.zeros(3)
+    xc = np.array([centre + 0.9*u]); qc = np.array([1e-9])
+    ref = cc.cylinder_field(xc, qc, 1.0, 2.0) if cavity == "pipe" else cc.kelvin_field(xc, qc, 1.0)
+    e = {}
+    for n in (16, 24):
+        mesh = cc.pipe_blockmesh(1.0, 2.0, n) if cavity == "pipe" else cc.sphere_blockmesh(1.0, n)
+        E = run(f"{cavity}{n}", xc, qc, n, coeffs="radius 0.2;", blockMesh=mesh)
+        e[n] = np.linalg.norm(E - ref)/np.linalg.norm(ref) if E is not None else np.inf
+    report(f"curvedWall.{cavity}", e[24] < 0.05 and e[24] < e[16]/1.3,
+           f"charge 0.1 radii from the wall, shape radius 0.2: force error n = 16: {e[16]:.2e}, 24: {e[24]:.2e} (< 0.05, ratio >= 1.3)")
 PYEOF
