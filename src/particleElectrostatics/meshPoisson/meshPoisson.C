@@ -521,6 +521,7 @@ void Foam::meshPoisson::addWallImages
     DynamicList<label> go(origin);
     DynamicList<vector> pn;
     DynamicList<scalar> pd, ps;
+    const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
     for (label i = 0; i < n0; ++i)
     {
         if (start[i + 1] == start[i])
@@ -533,7 +534,6 @@ void Foam::meshPoisson::addWallImages
         // plane): the faces of a smooth wall near a charge differ by the
         // mesh's angular spacing, and one image per face would count the
         // wall several times; walls meeting at a corner stay distinct
-        const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
         pn.clear();
         pd.clear();
         ps.clear();
