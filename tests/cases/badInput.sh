@@ -215,6 +215,12 @@ badCase hugeMeshPoissonRadius 'electrostaticsModel directCoulomb;' \
 badCase negativeNonOrthCorrectors 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nNonOrthogonalCorrectors -1; }' \
     'Entry nNonOrthogonalCorrectors = -1 in .* must be >= 0'
+badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldRadius 1; }' \
+    'Entry selfFieldRadius = 1 in .* must be 0 .* or in \[2, 10\] shape radii'
+badCase negativeNonOrthTolerance 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nonOrthogonalTolerance -1; }' \
+    'Entry nonOrthogonalTolerance = -1 in .* must be in \[0, 1\)'
 badCase repeatedInjector '(\);\s*\}\s*)\}' '\1    twin { $twoSpheres; }\n    }' \
     "The parcels' positions must differ: check the injection models 2\(twoSpheres twin\)"
 base=carrier

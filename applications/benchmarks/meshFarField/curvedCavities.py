@@ -18,12 +18,15 @@ projected onto the sphere) and the exact field of point charges inside it
                                  with n x n cells, four outer blocks with
                                  arc edges), cyclic ends; patch walls
 
+    graded_box_blockmesh(L, n, g) blockMeshDict body: the box [0, L]^3,
+                                 n^3 cells graded g:1 in each direction
+
 The pipe's exact field is tests/tools/groundedCylinder.py (the grounded
 infinite cylinder, periodic along z; two independent series, checked by its
---selftest).
+--selftest), the box's tests/tools/groundedBox.py (image sums).
 
-    curvedCavities.py [--cavity sphere|pipe] [--n 12 16 24] [--radius 0.2]
-                      [--work DIR]
+    curvedCavities.py [--cavity sphere|pipe|gradedBox] [--n 12 16 24] [--radius 0.2]
+                      [--coeffs "ENTRIES"] [--work DIR]
         prints the force error of meshPoisson for single charges at several
         distances from the centre (the axis) and a pair of opposite charges
 """
@@ -37,6 +40,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tests", "tools"))
 from groundedCylinder import field as cylinder_field   # noqa: E402
+from groundedBox import field as box_field             # noqa: E402
 K_COULOMB = 1.0/(4.0*np.pi*8.8541878128e-12)
 
 
@@ -161,20 +165,46 @@ boundary
 """
 
 
+def graded_box_blockmesh(L, n, grading):
+    """blockMeshDict body: the box [0, L]^3 with n^3 cells, each direction
+    graded by `grading` (last cell / first cell); patch walls."""
+    g = float(grading)
+    return f"""
+scale 1;
+vertices
+(
+    (0 0 0) ({L!r} 0 0) ({L!r} {L!r} 0) (0 {L!r} 0)
+    (0 0 {L!r}) ({L!r} 0 {L!r}) ({L!r} {L!r} {L!r}) (0 {L!r} {L!r})
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) ({n} {n} {n}) simpleGrading ({g!r} {g!r} {g!r})
+);
+edges ();
+boundary
+(
+    walls {{ type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }}
+);
+"""
+
+
 def main():
     from farFieldCase import FarFieldCase
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, nargs="+", default=[12, 16, 24])
     ap.add_argument("--radius", type=float, default=0.2)
-    ap.add_argument("--cavity", choices=("sphere", "pipe"), default="sphere")
+    ap.add_argument("--cavity", choices=("sphere", "pipe", "gradedBox"), default="sphere")
     ap.add_argument("--work", default=None)
+    ap.add_argument("--coeffs", default="", help="further meshPoisson entries")
     a = ap.parse_args()
     work = a.work or os.path.join(HERE, "runs", a.cavity)
     rng = np.random.default_rng(5)
     pipe = a.cavity == "pipe"
-    # the pipe: radius 1, period 2 along z, charges about z = 1
+    box = a.cavity == "gradedBox"
+    # the pipe: radius 1, period 2 along z, charges about z = 1; the box:
+    # [0, 2]^3 graded 3:1, charges about its centre
     length = 2.0
-    centre = np.array([0, 0, 1.0]) if pipe else np.zeros(3)
+    centre = np.array([0, 0, 1.0]) if pipe else np.ones(3) if box else np.zeros(3)
     cases = []
     for rr in (0.0, 0.3, 0.6, 0.8, 0.9):
         u = rng.normal(size=3)
@@ -192,12 +222,14 @@ def main():
     print("| case | |E exact| [V/m] | " + " | ".join(f"error n = {n}" for n in a.n) + " |")
     print("|---|--:|" + "--:|"*len(a.n))
     for name, x, q in cases:
-        ref = cylinder_field(x, q, 1.0, length) if pipe else kelvin_field(x, q, 1.0)
+        ref = cylinder_field(x, q, 1.0, length) if pipe \
+            else box_field(x, q, 2.0) if box else kelvin_field(x, q, 1.0)
         errs = []
         for n in a.n:
-            mesh = pipe_blockmesh(1.0, length, n) if pipe else sphere_blockmesh(1.0, n)
+            mesh = pipe_blockmesh(1.0, length, n) if pipe \
+                else graded_box_blockmesh(2.0, n, 3) if box else sphere_blockmesh(1.0, n)
             c = FarFieldCase(os.path.join(work, f"{name.replace(' ', '_')}_{n}"), x, q, 1.0, n,
-                             "meshPoisson", f"radius {a.radius};", blockMesh=mesh)
+                             "meshPoisson", f"radius {a.radius}; {a.coeffs}", blockMesh=mesh)
             c.run()
             E = c.fields()[0]
             scale = np.linalg.norm(ref, axis=1)

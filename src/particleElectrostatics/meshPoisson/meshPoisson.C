@@ -140,13 +140,29 @@ Foam::scalar Foam::meshPoisson::readRadius() const
 }
 
 
+Foam::scalar Foam::meshPoisson::readSelfFieldRadius() const
+{
+    const scalar D = coeffs_.lookupOrDefault<scalar>("selfFieldRadius", 3);
+    if (!(D == 0 || (D >= 2 && D <= 10)))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry selfFieldRadius = " << D << " in "
+            << coeffs_.name().c_str() << " must be 0 (keep each shape's "
+            << "field on itself) or in [2, 10] shape radii (the patch on "
+            << "which it is found and removed)" << exit(FatalIOError);
+    }
+    return D;
+}
+
+
 Foam::label Foam::meshPoisson::readNonOrthCorrectors() const
 {
     const word key("nNonOrthogonalCorrectors");
     if (!coeffs_.found(key))
     {
-        // One corrector wherever the correction is not zero to round-off
-        return maxNonOrthogonality_ > 1e-6 ? 1 : 0;
+        // Correctors until converged wherever the correction is not zero
+        // to round-off
+        return maxNonOrthogonality_ > 1e-6 ? 20 : 0;
     }
     const label n = coeffs_.get<label>(key);
     if (n < 0)
@@ -158,6 +174,22 @@ Foam::label Foam::meshPoisson::readNonOrthCorrectors() const
             << " updated)" << exit(FatalIOError);
     }
     return n;
+}
+
+
+Foam::scalar Foam::meshPoisson::readNonOrthTolerance() const
+{
+    const scalar tol =
+        coeffs_.lookupOrDefault<scalar>("nonOrthogonalTolerance", 1e-6);
+    if (!(tol >= 0 && tol < 1))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry nonOrthogonalTolerance = " << tol << " in "
+            << coeffs_.name().c_str() << " must be in [0, 1) (initial "
+            << "residual of the Phi solve below which no further "
+            << "non-orthogonal corrector runs)" << exit(FatalIOError);
+    }
+    return tol;
 }
 
 
@@ -741,9 +773,68 @@ void Foam::meshPoisson::averageOverShapes
         shapeField_[origin[i]] +=
             i < nReal ? sum : sourceSign_[i]*(sourceT_[i].T() & sum);
     }
+    removeSelfFields(nReal);
     Pstream::listCombineGather(shapeField_, plusEqOp<vector>());
     Pstream::listCombineScatter(shapeField_);
     shapeField_ /= shapeSum_;
+}
+
+
+void Foam::meshPoisson::removeSelfFields(const label nReal)
+{
+    if (!selfField_.valid())
+    {
+        return;
+    }
+    const scalarField& V = mesh_.V().field();
+    const scalar R = radius_;
+    const auto neighbourhood =
+        [&](const point& y, const scalar r, DynamicList<label>& cells)
+    {
+        DynamicList<scalar> dist;
+        cellsNear(y, r, cells, dist);
+    };
+    // A shape's cells and weights as shapeWeights finds them
+    const auto shape =
+        [&](const point& y, DynamicList<label>& cells, DynamicList<scalar>& w)
+    {
+        cellsNear(y, R, cells, w);
+        forAll(cells, j)
+        {
+            w[j] = (R - w[j])*V[cells[j]];
+        }
+    };
+    for (label i = 0; i < nReal; ++i)
+    {
+        const label start = shapeStart_[i];
+        const label end = shapeStart_[i + 1];
+        if (end == start)
+        {
+            continue;
+        }
+        // The whole shape on this processor, no copy or image deposited
+        // (else left as it is: a shape cut by a wall or a cyclic patch);
+        // its cell: the one with the largest weight
+        scalar wLocal = 0;
+        scalar wMax = 0;
+        label celli = -1;
+        for (label k = start; k < end; ++k)
+        {
+            wLocal += shapeWeights_[k];
+            if (shapeWeights_[k] > wMax)
+            {
+                wMax = shapeWeights_[k];
+                celli = shapeCells_[k];
+            }
+        }
+        if (wLocal < (1 - 1e-12)*shapeSum_[i])
+        {
+            continue;
+        }
+        shapeField_[i] -=
+            (qs_[i]*wLocal)
+           *selfField_->field(xs_[i], celli, neighbourhood, shape);
+    }
 }
 
 
@@ -771,6 +862,8 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     solveInterval_(coeffs.lookupOrDefault<label>("solveInterval", 1)),
     maxNonOrthogonality_(maxNonOrthogonality()),
     nNonOrthCorr_(readNonOrthCorrectors()),
+    nonOrthTolerance_(readNonOrthTolerance()),
+    selfFieldRadius_(readSelfFieldRadius()),
     nEvaluations_(0),
     solved_(false),
     periodicShifts_(),
@@ -924,6 +1017,29 @@ void Foam::meshPoisson::solve()
            /dimensionedScalar("V", dimVolume, gSum(mesh_.V()));
     }
 
+    if
+    (
+        correction_ == correctionType::shaped
+     && selfFieldRadius_ > 0
+     && !selfField_.valid()
+    )
+    {
+        const fvScalarMatrix L(fvm::laplacian(eps, Phi_));
+        selfField_.reset
+        (
+            new shapeSelfField
+            (
+                mesh_,
+                eps.value(),
+                L.upper(),
+                L.internalCoeffs(),
+                selfFieldRadius_*radius_,
+                nNonOrthCorr_,
+                nonOrthTolerance_
+            )
+        );
+    }
+
     // The non-orthogonal correction is explicit (from the Phi of the last
     // solve): re-solve with it updated
     for (label corr = 0; corr <= nNonOrthCorr_; ++corr)
@@ -934,7 +1050,12 @@ void Foam::meshPoisson::solve()
         );
         // Only used when no patch fixes the potential
         PhiEqn.setReference(Pstream::master() ? 0 : -1, 0);
-        PhiEqn.solve();
+        const scalar residual = PhiEqn.solve().initialResidual();
+        if (residual < nonOrthTolerance_)
+        {
+            // The correction no longer changes the potential
+            break;
+        }
     }
 
     E_ = -fvc::grad(Phi_);

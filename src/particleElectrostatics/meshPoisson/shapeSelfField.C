@@ -1,0 +1,381 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: charged dielectric particles for OpenFOAM
+\*---------------------------------------------------------------------------*/
+
+#include "shapeSelfField.H"
+#include "mathematicalConstants.H"
+#include "emptyFvPatch.H"
+#include "surfaceFields.H"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::shapeSelfField::shapeSelfField
+(
+    const fvMesh& mesh,
+    const scalar eps,
+    const scalarField& upper,
+    const FieldField<Field, scalar>& internalCoeffs,
+    const scalar patchRadius,
+    const label nNonOrthCorr,
+    const scalar tolerance
+)
+:
+    mesh_(mesh),
+    eps_(eps),
+    patchRadius_(patchRadius),
+    nNonOrthCorr_(nNonOrthCorr),
+    tolerance_(tolerance),
+    internalCoeff_(upper),
+    boundaryCoeff_(mesh.boundary().size()),
+    boundaryPoint_(mesh.boundary().size()),
+    state_(mesh.nCells(), -1),
+    local_(mesh.nCells(), -1)
+{
+    // A boundary face as a fixed value: the matrix's own coefficient where
+    // the potential has one (fixed value, coupled), else the one a fixed
+    // value would have, eps |Sf| with the non-orthogonal delta coefficient
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& p = mesh.boundary()[patchi];
+        scalarField& b = boundaryCoeff_[patchi];
+        if (isA<emptyFvPatch>(p))
+        {
+            b.setSize(p.size(), 0);
+            continue;
+        }
+        // The fixed value's point: the neighbour's centre across a coupled
+        // patch, else the face centre
+        boundaryPoint_[patchi] = p.Cf();
+        if (p.coupled())
+        {
+            boundaryPoint_[patchi] = p.Cn() + p.delta();
+        }
+        b = -internalCoeffs[patchi];
+        const scalarField& magSf = p.magSf();
+        const scalarField& dc = mesh.nonOrthDeltaCoeffs().boundaryField()[patchi];
+        forAll(b, facei)
+        {
+            if (!(b[facei] > 0))
+            {
+                b[facei] = eps*magSf[facei]*dc[facei];
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::shapeSelfField::circumradius(const label c) const
+{
+    scalar r = 0;
+    for (const label pointi : mesh_.cellPoints()[c])
+    {
+        r = max(r, mag(mesh_.points()[pointi] - mesh_.C()[c]));
+    }
+    return r;
+}
+
+
+bool Foam::shapeSelfField::uniformAround
+(
+    const label c,
+    const UList<label>& cells
+) const
+{
+    const scalarField& V = mesh_.V().field();
+    const surfaceScalarField& w = mesh_.weights();
+    const surfaceVectorField& corr = mesh_.nonOrthCorrectionVectors();
+    const label nInternal = mesh_.nInternalFaces();
+    const scalar tol = 1e-6;
+    for (const label ci : cells)
+    {
+        if (mag(V[ci] - V[c]) > tol*V[c])
+        {
+            return false;
+        }
+        for (const label f : mesh_.cells()[ci])
+        {
+            if (f >= nInternal)
+            {
+                // A planar wall of a uniform mesh: faces orthogonal to the
+                // line from their cell's centre
+                const label patchi = mesh_.boundaryMesh().whichPatch(f);
+                const fvPatch& p = mesh_.boundary()[patchi];
+                const label facei = f - p.start();
+                if (isA<emptyFvPatch>(p))
+                {
+                    continue;
+                }
+                const vector d(p.Cf()[facei] - mesh_.C()[ci]);
+                const vector n
+                (
+                    mesh_.Sf().boundaryField()[patchi][facei]
+                   /mesh_.magSf().boundaryField()[patchi][facei]
+                );
+                if (mag(n ^ d) > tol*mag(d))
+                {
+                    return false;
+                }
+                continue;
+            }
+            if (mag(w[f] - 0.5) > tol || mag(corr[f]) > tol)
+            {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::vector> Foam::shapeSelfField::solve
+(
+    const UList<label>& patchCells,
+    const UList<point>& xs,
+    const UList<DynamicList<label>>& shapeCells,
+    const UList<DynamicList<scalar>>& shapeWeights
+) const
+{
+    const label n = patchCells.size();
+    const scalarField& V = mesh_.V().field();
+    const vectorField& C = mesh_.C().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const label nInternal = mesh_.nInternalFaces();
+    const surfaceScalarField& weights = mesh_.weights();
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const scalar k = 1/(4*constant::mathematical::pi*eps_);
+
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = i;
+    }
+
+    // The patch's faces, each once: internal faces with the patch-local
+    // index of each side (-1: a cell around the patch, holding the exact
+    // value at its centre) and boundary faces with a fixed value
+    DynamicList<label> faces;
+    DynamicList<label> faceOwn, faceNei;
+    DynamicList<label> bFaceRow;
+    DynamicList<point> bFaceAt;
+    DynamicList<vector> bFaceSf;
+    DynamicList<scalar> bFaceCoeff;
+    forAll(patchCells, i)
+    {
+        const label c = patchCells[i];
+        for (const label f : mesh_.cells()[c])
+        {
+            if (f < nInternal)
+            {
+                const label lo = local_[own[f]];
+                const label ln = local_[nei[f]];
+                // Once: from the owner's side, or from a patch neighbour
+                // whose owner lies outside
+                if ((own[f] == c) || lo < 0)
+                {
+                    faces.append(f);
+                    faceOwn.append(lo);
+                    faceNei.append(ln);
+                }
+            }
+            else
+            {
+                const label patchi = pbm.whichPatch(f);
+                const label facei = f - pbm[patchi].start();
+                const scalar b = boundaryCoeff_[patchi][facei];
+                if (b > 0)
+                {
+                    bFaceRow.append(i);
+                    bFaceAt.append(boundaryPoint_[patchi][facei]);
+                    bFaceSf.append(Sf.boundaryField()[patchi][facei]);
+                    bFaceCoeff.append(b);
+                }
+            }
+        }
+    }
+
+    // The matrix (negated: symmetric positive definite), factorised once
+    // for every shape
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(2*faces.size() + n);
+    scalarField diag(n, 0);
+    forAll(faces, j)
+    {
+        const scalar a = internalCoeff_[faces[j]];
+        const label lo = faceOwn[j], ln = faceNei[j];
+        if (lo >= 0)
+        {
+            diag[lo] += a;
+        }
+        if (ln >= 0)
+        {
+            diag[ln] += a;
+        }
+        if (lo >= 0 && ln >= 0)
+        {
+            triplets.emplace_back(lo, ln, -a);
+            triplets.emplace_back(ln, lo, -a);
+        }
+    }
+    forAll(bFaceRow, j)
+    {
+        diag[bFaceRow[j]] += bFaceCoeff[j];
+    }
+    forAll(diag, i)
+    {
+        triplets.emplace_back(i, i, diag[i]);
+    }
+    Eigen::SparseMatrix<double> M(n, n);
+    M.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
+
+    List<vector> result(xs.size(), Zero);
+    scalarField phiOut(faces.size()), phiB(bFaceRow.size());
+    vectorField gradOut(faces.size());
+    vectorField g(n);
+    forAll(xs, s)
+    {
+        const point& x = xs[s];
+        const UList<label>& cells = shapeCells[s];
+        const UList<scalar>& w = shapeWeights[s];
+
+        // The exact free-space potential per unit charge (and its
+        // gradient) at the cells around the patch and the boundary points
+        forAll(faces, j)
+        {
+            const label o =
+                faceOwn[j] < 0 ? own[faces[j]]
+              : faceNei[j] < 0 ? nei[faces[j]]
+              : -1;
+            if (o >= 0)
+            {
+                const vector r(C[o] - x);
+                const scalar mr = mag(r);
+                phiOut[j] = k/mr;
+                gradOut[j] = (-k/pow3(mr))*r;
+            }
+        }
+        forAll(bFaceRow, j)
+        {
+            phiB[j] = k/mag(bFaceAt[j] - x);
+        }
+
+        // The shape's charge and the fixed values
+        Eigen::VectorXd rhs0(Eigen::VectorXd::Zero(n));
+        scalar wSum = 0;
+        forAll(w, j)
+        {
+            wSum += w[j];
+        }
+        forAll(cells, j)
+        {
+            rhs0[local_[cells[j]]] += w[j]/wSum;
+        }
+        forAll(faces, j)
+        {
+            const label l = faceOwn[j] < 0 ? faceNei[j] : faceOwn[j];
+            if (faceOwn[j] < 0 || faceNei[j] < 0)
+            {
+                rhs0[l] += internalCoeff_[faces[j]]*phiOut[j];
+            }
+        }
+        forAll(bFaceRow, j)
+        {
+            rhs0[bFaceRow[j]] += bFaceCoeff[j]*phiB[j];
+        }
+        Eigen::VectorXd phi(ldlt.solve(rhs0));
+
+        // Gauss linear gradient at the patch cells
+        const auto gaussGrad = [&]()
+        {
+            g = Zero;
+            forAll(faces, j)
+            {
+                const label f = faces[j];
+                const label lo = faceOwn[j], ln = faceNei[j];
+                const scalar phiF =
+                    weights[f]*(lo >= 0 ? phi[lo] : phiOut[j])
+                  + (1 - weights[f])*(ln >= 0 ? phi[ln] : phiOut[j]);
+                if (lo >= 0)
+                {
+                    g[lo] += phiF*Sf[f];
+                }
+                if (ln >= 0)
+                {
+                    g[ln] -= phiF*Sf[f];
+                }
+            }
+            forAll(bFaceRow, j)
+            {
+                g[bFaceRow[j]] += phiB[j]*bFaceSf[j];
+            }
+            forAll(patchCells, i)
+            {
+                g[i] /= V[patchCells[i]];
+            }
+        };
+
+        // The explicit non-orthogonal correction, re-solved as meshPoisson
+        // does until it no longer changes the potential
+        for (label corr = 0; corr < nNonOrthCorr_; ++corr)
+        {
+            const Eigen::VectorXd phiLast(phi);
+            gaussGrad();
+            Eigen::VectorXd rhs(rhs0);
+            forAll(faces, j)
+            {
+                const label f = faces[j];
+                const label lo = faceOwn[j], ln = faceNei[j];
+                const vector gf =
+                    weights[f]*(lo >= 0 ? g[lo] : gradOut[j])
+                  + (1 - weights[f])*(ln >= 0 ? g[ln] : gradOut[j]);
+                const scalar flux = eps_*magSf[f]*(corrVec[f] & gf);
+                // Added to the owner's Laplacian, taken from the
+                // neighbour's (the system is negated)
+                if (lo >= 0)
+                {
+                    rhs[lo] += flux;
+                }
+                if (ln >= 0)
+                {
+                    rhs[ln] -= flux;
+                }
+            }
+            phi = ldlt.solve(rhs);
+            if
+            (
+                (phi - phiLast).lpNorm<Eigen::Infinity>()
+              < tolerance_*phi.lpNorm<Eigen::Infinity>()
+            )
+            {
+                break;
+            }
+        }
+
+        // The shape's average of -grad(Phi)
+        gaussGrad();
+        forAll(cells, j)
+        {
+            result[s] -= w[j]*g[local_[cells[j]]];
+        }
+        result[s] /= wSum;
+    }
+
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = -1;
+    }
+    return result;
+}
+
+
+// ************************************************************************* //
