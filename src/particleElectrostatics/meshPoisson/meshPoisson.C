@@ -804,6 +804,23 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
             w[j] = (R - w[j])*V[cells[j]];
         }
     };
+    // The nearest wall face within r of y: its plane and image sign
+    const auto wallPlane =
+        [&](const point& y, const scalar r, point& p, vector& n, scalar& sign)
+    {
+        scalar best = sqr(r);
+        forAll(wallC_, f)
+        {
+            const scalar d2 = magSqr(wallC_[f] - y);
+            if (d2 < best)
+            {
+                best = d2;
+                p = wallC_[f];
+                n = wallN_[f];
+                sign = wallSign_[f];
+            }
+        }
+    };
     for (label i = 0; i < nReal; ++i)
     {
         const label start = shapeStart_[i];
@@ -833,7 +850,7 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
         }
         shapeField_[i] -=
             (qs_[i]*wLocal)
-           *selfField_->field(xs_[i], celli, neighbourhood, shape);
+           *selfField_->field(xs_[i], celli, neighbourhood, shape, wallPlane);
     }
 }
 

@@ -139,7 +139,10 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     const UList<label>& patchCells,
     const UList<point>& xs,
     const UList<DynamicList<label>>& shapeCells,
-    const UList<DynamicList<scalar>>& shapeWeights
+    const UList<DynamicList<scalar>>& shapeWeights,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
 ) const
 {
     const label n = patchCells.size();
@@ -248,8 +251,28 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         const UList<label>& cells = shapeCells[s];
         const UList<scalar>& w = shapeWeights[s];
 
-        // The exact free-space potential per unit charge (and its
-        // gradient) at the cells around the patch and the boundary points
+        // The exact potential per unit charge (and its gradient) at the
+        // cells around the patch and the boundary points: free space, or
+        // the charge and its image in the nearest wall's plane
+        const point xImage
+        (
+            x - 2*((x - wallPoint) & wallNormal)*wallNormal
+        );
+        const auto exact = [&](const point& y, scalar& phiY, vector& gradY)
+        {
+            const vector r(y - x);
+            const scalar mr = mag(r);
+            phiY = k/mr;
+            gradY = (-k/pow3(mr))*r;
+            if (imageSign != 0)
+            {
+                const vector ri(y - xImage);
+                const scalar mri = mag(ri);
+                phiY += imageSign*k/mri;
+                gradY -= (imageSign*k/pow3(mri))*ri;
+            }
+        };
+        vector unused;
         forAll(faces, j)
         {
             const label o =
@@ -258,15 +281,12 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
               : -1;
             if (o >= 0)
             {
-                const vector r(C[o] - x);
-                const scalar mr = mag(r);
-                phiOut[j] = k/mr;
-                gradOut[j] = (-k/pow3(mr))*r;
+                exact(C[o], phiOut[j], gradOut[j]);
             }
         }
         forAll(bFaceRow, j)
         {
-            phiB[j] = k/mag(bFaceAt[j] - x);
+            exact(bFaceAt[j], phiB[j], unused);
         }
 
         // The shape's charge and the fixed values
@@ -368,6 +388,13 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             result[s] -= w[j]*g[local_[cells[j]]];
         }
         result[s] /= wSum;
+        if (imageSign != 0)
+        {
+            // Less the image's exact field: what is left is the mesh's
+            // error on this local problem
+            const vector ri(x - xImage);
+            result[s] -= (imageSign*k/pow3(mag(ri)))*ri;
+        }
     }
 
     forAll(patchCells, i)
