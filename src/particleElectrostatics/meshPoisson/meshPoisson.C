@@ -420,6 +420,24 @@ void Foam::meshPoisson::cellsNear
 }
 
 
+void Foam::meshPoisson::shapeAt
+(
+    const point& y,
+    DynamicList<label>& cells,
+    DynamicList<scalar>& w
+) const
+{
+    // S2 shape (Hockney & Eastwood section 8-3): rho(r) ~ (R - r) for
+    // r < R, sampled at the cell centres
+    cellsNear(y, radius_, cells, w);
+    const scalarField& V = mesh_.V().field();
+    forAll(cells, j)
+    {
+        w[j] = (radius_ - w[j])*V[cells[j]];
+    }
+}
+
+
 void Foam::meshPoisson::collectWallFaces()
 {
     // All processors hold every wall face (centre, outward unit normal,
@@ -660,14 +678,13 @@ void Foam::meshPoisson::shapeWeights
     const label nReal
 )
 {
-    const scalarField& V = mesh_.V().field();
     const scalar R = radius_;
 
     // One search per source: the local cells within R and their weights
     // (R - r) V, summed per charge over its copies, images and all
     // processors (conservative deposition)
     DynamicList<label> near;
-    DynamicList<scalar> dist;
+    DynamicList<scalar> weight;
     shapeCells_.clear();
     shapeWeights_.clear();
     shapeStart_.setSize(x.size() + 1);
@@ -678,15 +695,10 @@ void Foam::meshPoisson::shapeWeights
     {
         if (magSqr(localBb_.nearest(x[i]) - x[i]) < sqr(R))
         {
-            cellsNear(x[i], R, near, dist);
-            scalar& w = shapeSum_[origin[i]];
-            forAll(near, j)
-            {
-                const scalar wj = (R - dist[j])*V[near[j]];
-                shapeCells_.append(near[j]);
-                shapeWeights_.append(wj);
-                w += wj;
-            }
+            shapeAt(x[i], near, weight);
+            shapeCells_.append(near);
+            shapeWeights_.append(weight);
+            shapeSum_[origin[i]] += sum(weight);
         }
         shapeStart_[i + 1] = shapeCells_.size();
     }
@@ -786,23 +798,16 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
     {
         return;
     }
-    const scalarField& V = mesh_.V().field();
-    const scalar R = radius_;
     const auto neighbourhood =
         [&](const point& y, const scalar r, DynamicList<label>& cells)
     {
         DynamicList<scalar> dist;
         cellsNear(y, r, cells, dist);
     };
-    // A shape's cells and weights as shapeWeights finds them
     const auto shape =
         [&](const point& y, DynamicList<label>& cells, DynamicList<scalar>& w)
     {
-        cellsNear(y, R, cells, w);
-        forAll(cells, j)
-        {
-            w[j] = (R - w[j])*V[cells[j]];
-        }
+        shapeAt(y, cells, w);
     };
     // The nearest wall face within r of y: its plane and image sign
     const auto wallPlane =
@@ -1047,7 +1052,7 @@ void Foam::meshPoisson::solve()
             new shapeSelfField
             (
                 mesh_,
-                eps.value(),
+                epsilonR_,
                 L.upper(),
                 L.internalCoeffs(),
                 selfFieldRadius_*radius_,

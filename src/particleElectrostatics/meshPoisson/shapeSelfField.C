@@ -3,7 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "shapeSelfField.H"
-#include "mathematicalConstants.H"
+#include "pairwiseCoulomb.H"
 #include "emptyFvPatch.H"
 #include "surfaceFields.H"
 
@@ -15,7 +15,7 @@
 Foam::shapeSelfField::shapeSelfField
 (
     const fvMesh& mesh,
-    const scalar eps,
+    const scalar epsilonR,
     const scalarField& upper,
     const FieldField<Field, scalar>& internalCoeffs,
     const scalar patchRadius,
@@ -24,7 +24,8 @@ Foam::shapeSelfField::shapeSelfField
 )
 :
     mesh_(mesh),
-    eps_(eps),
+    eps_(pairwiseCoulomb::vacuumPermittivity*epsilonR),
+    k_(pairwiseCoulomb(epsilonR).k()),
     patchRadius_(patchRadius),
     nNonOrthCorr_(nNonOrthCorr),
     tolerance_(tolerance),
@@ -60,7 +61,7 @@ Foam::shapeSelfField::shapeSelfField
         {
             if (!(b[facei] > 0))
             {
-                b[facei] = eps*magSf[facei]*dc[facei];
+                b[facei] = eps_*magSf[facei]*dc[facei];
             }
         }
     }
@@ -156,7 +157,7 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     const surfaceScalarField& magSf = mesh_.magSf();
     const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    const scalar k = 1/(4*constant::mathematical::pi*eps_);
+    const scalar k = k_;
 
     forAll(patchCells, i)
     {
