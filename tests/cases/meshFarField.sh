@@ -247,4 +247,14 @@ for cavity, n in (("sphere", 13), ("pipe", 14), ("gradedBox", 32)):
     report(f"selfField.{cavity}", ok,
            f"n = {n}, single charges at 0.3, 0.6, 0.8: force error {removed[0]:.2e}, {removed[1]:.2e}, {removed[2]:.2e} "
            f"(kept: {kept[0]:.2e}, {kept[1]:.2e}); pair 0.2 apart: {pair:.2e} (< 0.05, >= 2x better than kept)")
+
+# 11. No self-force where the cavity is symmetric: a charge alone at the
+#     centre of the grounded sphere (n = 13: the centre of the middle cell
+#     of a mesh symmetric about it) feels none with its self field removed,
+#     to round-off (scale: its Coulomb field at the shape radius)
+E = run("self_sphere_centre", np.zeros((1, 3)), np.array([1e-9]), 13, coeffs="radius 0.2;",
+        blockMesh=cc.sphere_blockmesh(1.0, 13))
+c0 = np.linalg.norm(E[0])/(kq/0.2**2) if E is not None else np.inf
+report("selfField.sphereCentre", c0 < 1e-9,
+       f"charge at the centre of the sphere, n = 13, self field removed: |E|/(k q/R^2) = {c0:.1e}, tol 1e-9")
 PYEOF

@@ -826,6 +826,48 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
             }
         }
     };
+    // The shape at y reaches no coupled patch (cyclic or processor faces
+    // within R: copies carry it); faces within R belong to cells within
+    // 2R, the radius being larger than a cell
+    const auto clear = [&](const point& y)
+    {
+        DynamicList<label> cells;
+        DynamicList<scalar> dist;
+        cellsNear(y, 2*radius_, cells, dist);
+        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+        const pointField& pts = mesh_.points();
+        for (const label celli : cells)
+        {
+            for (const label f : mesh_.cells()[celli])
+            {
+                if
+                (
+                    mesh_.isInternalFace(f)
+                 || !pbm[pbm.whichPatch(f)].coupled()
+                )
+                {
+                    continue;
+                }
+                const point& Cf = mesh_.faceCentres()[f];
+                const vector n(normalised(mesh_.faceAreas()[f]));
+                const scalar d = (Cf - y) & n;
+                if (d >= radius_)
+                {
+                    continue;
+                }
+                scalar rf = 0;
+                for (const label pointi : mesh_.faces()[f])
+                {
+                    rf = max(rf, mag(pts[pointi] - Cf));
+                }
+                if (mag(y + d*n - Cf) <= 1.001*rf)
+                {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
     for (label i = 0; i < nReal; ++i)
     {
         const label start = shapeStart_[i];
@@ -855,7 +897,10 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
         }
         shapeField_[i] -=
             (qs_[i]*wLocal)
-           *selfField_->field(xs_[i], celli, neighbourhood, shape, wallPlane);
+           *selfField_->field
+            (
+                xs_[i], celli, neighbourhood, shape, wallPlane, clear
+            );
     }
 }
 
@@ -1055,6 +1100,7 @@ void Foam::meshPoisson::solve()
                 epsilonR_,
                 L.upper(),
                 L.internalCoeffs(),
+                radius_,
                 selfFieldRadius_*radius_,
                 nNonOrthCorr_,
                 nonOrthTolerance_

@@ -9,6 +9,7 @@
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
+#include <Eigen/QR>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -18,6 +19,7 @@ Foam::shapeSelfField::shapeSelfField
     const scalar epsilonR,
     const scalarField& upper,
     const FieldField<Field, scalar>& internalCoeffs,
+    const scalar shapeRadius,
     const scalar patchRadius,
     const label nNonOrthCorr,
     const scalar tolerance
@@ -32,7 +34,10 @@ Foam::shapeSelfField::shapeSelfField
     internalCoeff_(upper),
     boundaryCoeff_(mesh.boundary().size()),
     boundaryPoint_(mesh.boundary().size()),
+    shapeRadius_(shapeRadius),
     state_(mesh.nCells(), -1),
+    pointField_(mesh.nPoints(), Zero),
+    pointFound_(mesh.nPoints(), false),
     local_(mesh.nCells(), -1)
 {
     // A boundary face as a fixed value: the matrix's own coefficient where
@@ -130,6 +135,125 @@ bool Foam::shapeSelfField::uniformAround
         }
     }
     return true;
+}
+
+
+Foam::scalar Foam::shapeSelfField::tetWeights
+(
+    const point& x,
+    const label c,
+    const label facei,
+    const label k,
+    vector& s
+) const
+{
+    // x = Cc + s1 (Cf - Cc) + s2 (pa - Cc) + s3 (pb - Cc), pa pb the edge
+    // from the face's k-th point
+    const face& f = mesh_.faces()[facei];
+    const point& Cc = mesh_.C()[c];
+    const tensor T
+    (
+        mesh_.faceCentres()[facei] - Cc,
+        mesh_.points()[f[k]] - Cc,
+        mesh_.points()[f[f.fcIndex(k)]] - Cc
+    );
+    if (mag(Foam::det(T)) < VSMALL*magSqr(T))
+    {
+        return -GREAT;
+    }
+    s = (x - Cc) & Foam::inv(T);
+    return min(min(1 - s.x() - s.y() - s.z(), s.x()), min(s.y(), s.z()));
+}
+
+
+Foam::vector Foam::shapeSelfField::interpolate
+(
+    const point& x,
+    const label c,
+    scalar& minWeight
+) const
+{
+    vector valueC(Zero);
+    const labelList& cPoints = mesh_.cellPoints()[c];
+    for (const label pointi : cPoints)
+    {
+        valueC += pointField_[pointi];
+    }
+    valueC /= cPoints.size();
+
+    // In the tetrahedron with the largest smallest barycentric weight
+    minWeight = -GREAT;
+    vector result(Zero);
+    for (const label facei : mesh_.cells()[c])
+    {
+        const face& f = mesh_.faces()[facei];
+        vector valueF(Zero);
+        for (const label pointi : f)
+        {
+            valueF += pointField_[pointi];
+        }
+        valueF /= f.size();
+        forAll(f, k)
+        {
+            vector s;
+            const scalar m = tetWeights(x, c, facei, k, s);
+            if (m > minWeight)
+            {
+                minWeight = m;
+                result =
+                    (1 - s.x() - s.y() - s.z())*valueC + s.x()*valueF
+                  + s.y()*pointField_[f[k]]
+                  + s.z()*pointField_[f[f.fcIndex(k)]];
+            }
+        }
+    }
+    return result;
+}
+
+
+Foam::label Foam::shapeSelfField::holdingCell
+(
+    const point& x,
+    const label c
+) const
+{
+    const auto minWeight = [&](const label ci)
+    {
+        scalar best = -GREAT;
+        for (const label facei : mesh_.cells()[ci])
+        {
+            forAll(mesh_.faces()[facei], k)
+            {
+                vector s;
+                best = max(best, tetWeights(x, ci, facei, k, s));
+            }
+        }
+        return best;
+    };
+    const scalar inside = -1e-9;
+    scalar best = minWeight(c);
+    if (best >= inside)
+    {
+        return c;
+    }
+    label bestCell = c;
+    for (const label pointi : mesh_.cellPoints()[c])
+    {
+        for (const label ci : mesh_.pointCells()[pointi])
+        {
+            const scalar m = ci == c ? -GREAT : minWeight(ci);
+            if (m >= inside)
+            {
+                return ci;
+            }
+            if (m > best)
+            {
+                best = m;
+                bestCell = ci;
+            }
+        }
+    }
+    return bestCell;
 }
 
 
@@ -313,19 +437,20 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         {
             rhs0[bFaceRow[j]] += bFaceCoeff[j]*phiB[j];
         }
-        Eigen::VectorXd phi(ldlt.solve(rhs0));
-
-        // Gauss linear gradient at the patch cells
-        const auto gaussGrad = [&]()
+        // Gauss linear gradient g of a potential p at the patch cells, with
+        // the fixed values around (fixed) or zero there (the part linear
+        // in p alone)
+        const auto gaussGrad = [&](const Eigen::VectorXd& p, const bool fixed)
         {
             g = Zero;
             forAll(faces, j)
             {
                 const label f = faces[j];
                 const label lo = faceOwn[j], ln = faceNei[j];
+                const scalar out = fixed ? phiOut[j] : 0;
                 const scalar phiF =
-                    weights[f]*(lo >= 0 ? phi[lo] : phiOut[j])
-                  + (1 - weights[f])*(ln >= 0 ? phi[ln] : phiOut[j]);
+                    weights[f]*(lo >= 0 ? p[lo] : out)
+                  + (1 - weights[f])*(ln >= 0 ? p[ln] : out);
                 if (lo >= 0)
                 {
                     g[lo] += phiF*Sf[f];
@@ -335,9 +460,12 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
                     g[ln] -= phiF*Sf[f];
                 }
             }
-            forAll(bFaceRow, j)
+            if (fixed)
             {
-                g[bFaceRow[j]] += phiB[j]*bFaceSf[j];
+                forAll(bFaceRow, j)
+                {
+                    g[bFaceRow[j]] += phiB[j]*bFaceSf[j];
+                }
             }
             forAll(patchCells, i)
             {
@@ -345,45 +473,96 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             }
         };
 
-        // The explicit non-orthogonal correction, re-solved as meshPoisson
-        // does until it no longer changes the potential
-        for (label corr = 0; corr < nNonOrthCorr_; ++corr)
+        // The explicit non-orthogonal correction's flux (added to the
+        // owner's Laplacian, taken from the neighbour's; the system is
+        // negated) from the gradient g
+        const auto correction = [&](const bool fixed)
         {
-            const Eigen::VectorXd phiLast(phi);
-            gaussGrad();
-            Eigen::VectorXd rhs(rhs0);
+            Eigen::VectorXd c(Eigen::VectorXd::Zero(n));
             forAll(faces, j)
             {
                 const label f = faces[j];
                 const label lo = faceOwn[j], ln = faceNei[j];
+                const vector out = fixed ? gradOut[j] : Zero;
                 const vector gf =
-                    weights[f]*(lo >= 0 ? g[lo] : gradOut[j])
-                  + (1 - weights[f])*(ln >= 0 ? g[ln] : gradOut[j]);
+                    weights[f]*(lo >= 0 ? g[lo] : out)
+                  + (1 - weights[f])*(ln >= 0 ? g[ln] : out);
                 const scalar flux = eps_*magSf[f]*(corrVec[f] & gf);
-                // Added to the owner's Laplacian, taken from the
-                // neighbour's (the system is negated)
                 if (lo >= 0)
                 {
-                    rhs[lo] += flux;
+                    c[lo] += flux;
                 }
                 if (ln >= 0)
                 {
-                    rhs[ln] -= flux;
+                    c[ln] -= flux;
                 }
             }
-            phi = ldlt.solve(rhs);
-            if
-            (
-                (phi - phiLast).lpNorm<Eigen::Infinity>()
-              < tolerance_*phi.lpNorm<Eigen::Infinity>()
-            )
+            return c;
+        };
+
+        // With the correction, the potential solves M phi = rhs0 + C phi
+        // + c0 (C linear in phi, c0 from the fixed values): meshPoisson's
+        // correctors are the fixed-point iteration of
+        // (I - M^-1 C) phi = M^-1 (rhs0 + c0), solved here by GMRES
+        // (Saad & Schultz 1986) preconditioned by the factorisation, in
+        // fewer solves. Hand-written: Eigen's GMRES (unsupported) takes an
+        // assembled matrix, C is a matrix-free two-ring stencil
+        Eigen::VectorXd phi;
+        if (nNonOrthCorr_ == 0)
+        {
+            phi = ldlt.solve(rhs0);
+        }
+        else
+        {
+            gaussGrad(Eigen::VectorXd::Zero(n), true);
+            phi = ldlt.solve(rhs0 + correction(true));
+            const auto A = [&](const Eigen::VectorXd& v)
             {
-                break;
+                gaussGrad(v, false);
+                return Eigen::VectorXd(v - ldlt.solve(correction(false)));
+            };
+            const Eigen::VectorXd Aphi(A(phi));
+            // Residual of the start phi: M^-1 C phi
+            Eigen::VectorXd r(phi - Aphi);
+            const scalar beta = r.norm();
+            const scalar target = tolerance_*phi.norm();
+            if (beta > target)
+            {
+                const label kMax = nNonOrthCorr_;
+                Eigen::MatrixXd Q(n, kMax + 1);
+                Eigen::MatrixXd H(Eigen::MatrixXd::Zero(kMax + 1, kMax));
+                Q.col(0) = r/beta;
+                Eigen::VectorXd y;
+                for (label k = 0; k < kMax; ++k)
+                {
+                    Eigen::VectorXd w(A(Q.col(k)));
+                    for (label i = 0; i <= k; ++i)
+                    {
+                        H(i, k) = Q.col(i).dot(w);
+                        w -= H(i, k)*Q.col(i);
+                    }
+                    H(k + 1, k) = w.norm();
+                    Eigen::VectorXd e(Eigen::VectorXd::Zero(k + 2));
+                    e[0] = beta;
+                    const Eigen::MatrixXd Hk(H.topLeftCorner(k + 2, k + 1));
+                    y = Hk.householderQr().solve(e);
+                    if
+                    (
+                        (e - Hk*y).norm() < target
+                     || H(k + 1, k) < 1e-14*beta
+                     || k == kMax - 1
+                    )
+                    {
+                        break;
+                    }
+                    Q.col(k + 1) = w/H(k + 1, k);
+                }
+                phi += Q.leftCols(y.size())*y;
             }
         }
 
         // The shape's average of -grad(Phi)
-        gaussGrad();
+        gaussGrad(phi, true);
         forAll(cells, j)
         {
             result[s] -= w[j]*g[local_[cells[j]]];
