@@ -169,8 +169,7 @@ Foam::scalar Foam::shapeSelfField::tetWeights
 Foam::vector Foam::shapeSelfField::interpolate
 (
     const point& x,
-    const label c,
-    scalar& minWeight
+    const label c
 ) const
 {
     vector valueC(Zero);
@@ -182,7 +181,7 @@ Foam::vector Foam::shapeSelfField::interpolate
     valueC /= cPoints.size();
 
     // In the tetrahedron with the largest smallest barycentric weight
-    minWeight = -GREAT;
+    scalar minWeight = -GREAT;
     vector result(Zero);
     for (const label facei : mesh_.cells()[c])
     {
