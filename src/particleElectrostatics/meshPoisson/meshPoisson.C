@@ -19,6 +19,9 @@
 #include "unitConversion.H"
 #include "polyMeshTools.H"
 
+#include <Eigen/QR>
+#include <vector>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -444,9 +447,10 @@ void Foam::meshPoisson::collectWallFaces()
     // circumradius, image sign), so they all find the same images
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const pointField& pts = mesh_.points();
-    DynamicList<point> c;
+    DynamicList<point> c, facePts;
     DynamicList<vector> n;
     DynamicList<scalar> r, sign;
+    DynamicList<label> nFacePts;
     forAll(pbm, patchi)
     {
         const polyPatch& pp = pbm[patchi];
@@ -471,7 +475,9 @@ void Foam::meshPoisson::collectWallFaces()
             for (const label pi : f)
             {
                 rf = max(rf, mag(pts[pi] - fc));
+                facePts.append(pts[pi]);
             }
+            nFacePts.append(f.size());
             c.append(fc);
             n.append(normalised(pp.faceAreas()[i]));
             r.append(rf);
@@ -485,6 +491,14 @@ void Foam::meshPoisson::collectWallFaces()
     allN[Pstream::myProcNo()] = n;
     allR[Pstream::myProcNo()] = r;
     allS[Pstream::myProcNo()] = sign;
+    List<pointField> allP(Pstream::nProcs());
+    List<labelList> allNP(Pstream::nProcs());
+    allP[Pstream::myProcNo()] = facePts;
+    allNP[Pstream::myProcNo()] = nFacePts;
+    Pstream::gatherList(allP);
+    Pstream::scatterList(allP);
+    Pstream::gatherList(allNP);
+    Pstream::scatterList(allNP);
     Pstream::gatherList(allC);
     Pstream::scatterList(allC);
     Pstream::gatherList(allN);
@@ -499,6 +513,151 @@ void Foam::meshPoisson::collectWallFaces()
     wallSign_ =
         ListListOps::combine<scalarField>(allS, accessOp<scalarField>());
     wallRMax_ = wallR_.size() ? max(wallR_) : 0;
+
+    const labelList nPts
+    (
+        ListListOps::combine<labelList>(allNP, accessOp<labelList>())
+    );
+    labelList pointStart(nPts.size() + 1, 0);
+    forAll(nPts, f)
+    {
+        pointStart[f + 1] = pointStart[f] + nPts[f];
+    }
+    fitWallSurfaces
+    (
+        ListListOps::combine<pointField>(allP, accessOp<pointField>()),
+        pointStart
+    );
+}
+
+
+void Foam::meshPoisson::wallFrame
+(
+    const label f,
+    vector& eu,
+    vector& ev
+) const
+{
+    const vector& n = wallN_[f];
+    eu = normalised(n ^ (mag(n.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0)));
+    ev = n ^ eu;
+}
+
+
+void Foam::meshPoisson::fitWallSurfaces
+(
+    const UList<point>& points,
+    const labelUList& pointStart
+)
+{
+    // The mesh's wall faces are chords of the user's wall (their points lie
+    // on it, their centres inside a curved wall by ~h^2 kappa/8): a plane
+    // image in a face's own plane would sit that much too close, a force
+    // error of twice the ratio to the wall distance (8 % at 0.1 radii from
+    // the wall of the sphere of curvedCavities.py, n = 13). The surface
+    // through the points of the face and of the faces around it (centres
+    // within 2.5 circumradii, one wall: normals within 45 degrees) gives
+    // the tangent plane at a charge's foot instead. Least squares by
+    // Eigen's column-pivoting QR; fewer than six independent points (a
+    // lone face) keep the face's plane
+    const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
+    wallSurface_.setSize(wallC_.size());
+    std::vector<labelList> neighbours(wallC_.size());
+    forPairsWithinCutoff
+    (
+        wallC_, wallC_, 2.5*wallRMax_ + VSMALL, -1,
+        [&](const label t, const label g, const vector& r, const scalar r2)
+        {
+            if
+            (
+                r2 < sqr(2.5*wallR_[t])
+             && (wallN_[t] & wallN_[g]) > oneWallCos
+            )
+            {
+                neighbours[t].append(g);
+            }
+        }
+    );
+    forAll(wallC_, f)
+    {
+        FixedList<scalar, 6>& c = wallSurface_[f];
+        c = Zero;
+        vector eu, ev;
+        wallFrame(f, eu, ev);
+        const scalar L = wallR_[f];
+        label m = 0;
+        for (const label g : neighbours[f])
+        {
+            m += pointStart[g + 1] - pointStart[g];
+        }
+        if (m < 6 || !(L > 0))
+        {
+            continue;
+        }
+        // Scaled by the face's radius for conditioning
+        Eigen::MatrixXd A(m, 6);
+        Eigen::VectorXd h(m);
+        label row = 0;
+        for (const label g : neighbours[f])
+        {
+            for (label k = pointStart[g]; k < pointStart[g + 1]; ++k)
+            {
+                const vector r((points[k] - wallC_[f])/L);
+                const scalar u = r & eu;
+                const scalar v = r & ev;
+                A.row(row) << 1, u, v, u*u, u*v, v*v;
+                h(row) = r & wallN_[f];
+                ++row;
+            }
+        }
+        Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+        qr.setThreshold(1e-6);
+        if (qr.rank() < 6)
+        {
+            continue;
+        }
+        const Eigen::VectorXd a(qr.solve(h));
+        c[0] = a(0)*L;
+        c[1] = a(1);
+        c[2] = a(2);
+        c[3] = a(3)/L;
+        c[4] = a(4)/L;
+        c[5] = a(5)/L;
+    }
+}
+
+
+void Foam::meshPoisson::wallTangentPlane
+(
+    const label f,
+    const point& y,
+    point& p,
+    vector& n
+) const
+{
+    const FixedList<scalar, 6>& c = wallSurface_[f];
+    vector eu, ev;
+    wallFrame(f, eu, ev);
+    p = y + ((wallC_[f] - y) & wallN_[f])*wallN_[f];
+    n = wallN_[f];
+    // The foot of y on the surface: two projections on its tangent plane
+    // (the surface is within a face's sag of the face's plane)
+    for (label iter = 0; iter < 2; ++iter)
+    {
+        const vector r(p - wallC_[f]);
+        const scalar u = r & eu;
+        const scalar v = r & ev;
+        const scalar hu = c[1] + 2*c[3]*u + c[4]*v;
+        const scalar hv = c[2] + c[4]*u + 2*c[5]*v;
+        const point s
+        (
+            wallC_[f] + u*eu + v*ev
+          + (c[0] + c[1]*u + c[2]*v + c[3]*u*u + c[4]*u*v + c[5]*v*v)
+           *wallN_[f]
+        );
+        n = normalised(wallN_[f] - hu*eu - hv*ev);
+        p = y + ((s - y) & n)*n;
+    }
 }
 
 
@@ -571,6 +730,7 @@ void Foam::meshPoisson::addWallImages
     DynamicList<label> go(origin);
     DynamicList<vector> pn;
     DynamicList<scalar> pd, ps;
+    DynamicList<label> pf;
     const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
     for (label i = 0; i < n0; ++i)
     {
@@ -580,13 +740,14 @@ void Foam::meshPoisson::addWallImages
         }
         // Distinct planes (normal, distance, sign), nearest first, <= 3.
         // Faces whose normals are within 45 degrees are one wall, imaged
-        // in the plane of its nearest face (a curved wall's local tangent
-        // plane): the faces of a smooth wall near a charge differ by the
+        // in its tangent plane at the foot of the charge on its nearest
+        // face (the surface fitted there): the faces of a smooth wall near a charge differ by the
         // mesh's angular spacing, and one image per face would count the
         // wall several times; walls meeting at a corner stay distinct
         pn.clear();
         pd.clear();
         ps.clear();
+        pf.clear();
         for (label j = start[i]; j < start[i + 1]; ++j)
         {
             const label f = pairs[j].second();
@@ -601,6 +762,7 @@ void Foam::meshPoisson::addWallImages
                         pn[k] = wallN_[f];
                         pd[k] = d;
                         ps[k] = wallSign_[f];
+                        pf[k] = f;
                     }
                     known = true;
                     break;
@@ -611,11 +773,27 @@ void Foam::meshPoisson::addWallImages
                 pn.append(wallN_[f]);
                 pd.append(d);
                 ps.append(wallSign_[f]);
+                pf.append(f);
             }
         }
         if (pn.empty())
         {
             continue;
+        }
+        // Each wall's tangent plane at the charge's foot (not the face's
+        // chord plane: see fitWallSurfaces)
+        forAll(pn, k)
+        {
+            point p;
+            vector n;
+            wallTangentPlane(pf[k], x[i], p, n);
+            // (a charge beyond a concave wall's surface, inside its
+            // faces, keeps the face's plane)
+            if (((p - x[i]) & n) > 0)
+            {
+                pn[k] = n;
+                pd[k] = (p - x[i]) & n;
+            }
         }
         // Keep the three nearest
         labelList order;
@@ -809,21 +987,36 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
     {
         shapeAt(y, cells, w);
     };
-    // The nearest wall face within r of y: its plane and image sign
+    // The wall face nearest to y within r: the wall's tangent plane at
+    // the foot of y (as addWallImages) and its image sign
     const auto wallPlane =
         [&](const point& y, const scalar r, point& p, vector& n, scalar& sign)
     {
         scalar best = sqr(r);
+        label nearest = -1;
         forAll(wallC_, f)
         {
             const scalar d2 = magSqr(wallC_[f] - y);
             if (d2 < best)
             {
                 best = d2;
-                p = wallC_[f];
-                n = wallN_[f];
-                sign = wallSign_[f];
+                nearest = f;
             }
+        }
+        if (nearest < 0)
+        {
+            return;
+        }
+        p = wallC_[nearest];
+        n = wallN_[nearest];
+        sign = wallSign_[nearest];
+        point pt;
+        vector nt;
+        wallTangentPlane(nearest, y, pt, nt);
+        if (((pt - y) & nt) > 0)
+        {
+            p = pt;
+            n = nt;
         }
     };
     // The shape at y reaches no coupled patch (cyclic or processor faces
