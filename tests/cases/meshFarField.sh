@@ -262,4 +262,11 @@ E = run("self_sphere_centre", np.zeros((1, 3)), np.array([1e-9]), 13, coeffs="ra
 c0 = np.linalg.norm(E[0])/(kq/0.2**2) if E is not None else np.inf
 report("selfField.sphereCentre", c0 < 1e-9,
        f"charge at the centre of the sphere, n = 13, self field removed: |E|/(k q/R^2) = {c0:.1e}, tol 1e-9")
+# ... and where the symmetric point is a mesh point (the axis of the
+# O-grid pipe, n = 14: its self field sampled there on a patch about it)
+E = run("self_pipe_axis", np.array([[0, 0, 1.0]]), np.array([1e-9]), 14, coeffs="radius 0.2;",
+        blockMesh=cc.pipe_blockmesh(1.0, 2.0, 14))
+c0 = np.linalg.norm(E[0])/(kq/0.2**2) if E is not None else np.inf
+report("selfField.pipeAxis", c0 < 1e-9,
+       f"charge on the axis of the pipe (a mesh point), n = 14, self field removed: |E|/(k q/R^2) = {c0:.1e}, tol 1e-9")
 PYEOF
