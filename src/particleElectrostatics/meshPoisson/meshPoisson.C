@@ -20,7 +20,6 @@
 #include "polyMeshTools.H"
 
 #include <Eigen/QR>
-#include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -562,7 +561,7 @@ void Foam::meshPoisson::fitWallSurfaces
     // lone face) keep the face's plane
     const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
     wallSurface_.setSize(wallC_.size());
-    std::vector<labelList> neighbours(wallC_.size());
+    List<DynamicList<label>> neighbours(wallC_.size());
     forPairsWithinCutoff
     (
         wallC_, wallC_, 2.5*wallRMax_ + VSMALL, -1,
@@ -641,10 +640,14 @@ void Foam::meshPoisson::wallTangentPlane
     p = y + ((wallC_[f] - y) & wallN_[f])*wallN_[f];
     n = wallN_[f];
     // The foot of y on the surface: two projections on its tangent plane
-    // (the surface is within a face's sag of the face's plane)
+    // (the surface is within a face's sag of the face's plane). A point
+    // beyond a concave wall's surface (inside its faces) keeps the face's
+    // plane
+    point pt(p);
+    vector nt(n);
     for (label iter = 0; iter < 2; ++iter)
     {
-        const vector r(p - wallC_[f]);
+        const vector r(pt - wallC_[f]);
         const scalar u = r & eu;
         const scalar v = r & ev;
         const scalar hu = c[1] + 2*c[3]*u + c[4]*v;
@@ -655,8 +658,13 @@ void Foam::meshPoisson::wallTangentPlane
           + (c[0] + c[1]*u + c[2]*v + c[3]*u*u + c[4]*u*v + c[5]*v*v)
            *wallN_[f]
         );
-        n = normalised(wallN_[f] - hu*eu - hv*ev);
-        p = y + ((s - y) & n)*n;
+        nt = normalised(wallN_[f] - hu*eu - hv*ev);
+        pt = y + ((s - y) & nt)*nt;
+    }
+    if (((pt - y) & nt) > 0)
+    {
+        p = pt;
+        n = nt;
     }
 }
 
@@ -741,9 +749,10 @@ void Foam::meshPoisson::addWallImages
         // Distinct planes (normal, distance, sign), nearest first, <= 3.
         // Faces whose normals are within 45 degrees are one wall, imaged
         // in its tangent plane at the foot of the charge on its nearest
-        // face (the surface fitted there): the faces of a smooth wall near a charge differ by the
-        // mesh's angular spacing, and one image per face would count the
-        // wall several times; walls meeting at a corner stay distinct
+        // face (the surface fitted there): the faces of a smooth wall near
+        // a charge differ by the mesh's angular spacing, and one image per
+        // face would count the wall several times; walls meeting at a
+        // corner stay distinct
         pn.clear();
         pd.clear();
         ps.clear();
@@ -785,15 +794,8 @@ void Foam::meshPoisson::addWallImages
         forAll(pn, k)
         {
             point p;
-            vector n;
-            wallTangentPlane(pf[k], x[i], p, n);
-            // (a charge beyond a concave wall's surface, inside its
-            // faces, keeps the face's plane)
-            if (((p - x[i]) & n) > 0)
-            {
-                pn[k] = n;
-                pd[k] = (p - x[i]) & n;
-            }
+            wallTangentPlane(pf[k], x[i], p, pn[k]);
+            pd[k] = (p - x[i]) & pn[k];
         }
         // Keep the three nearest
         labelList order;
@@ -1007,17 +1009,8 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
         {
             return;
         }
-        p = wallC_[nearest];
-        n = wallN_[nearest];
         sign = wallSign_[nearest];
-        point pt;
-        vector nt;
-        wallTangentPlane(nearest, y, pt, nt);
-        if (((pt - y) & nt) > 0)
-        {
-            p = pt;
-            n = nt;
-        }
+        wallTangentPlane(nearest, y, p, n);
     };
     // The shape at y reaches no coupled patch (cyclic or processor faces
     // within R: copies carry it); faces within R belong to cells within
