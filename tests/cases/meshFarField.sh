@@ -269,4 +269,23 @@ E = run("self_pipe_axis", np.array([[0, 0, 1.0]]), np.array([1e-9]), 14, coeffs=
 c0 = np.linalg.norm(E[0])/(kq/0.2**2) if E is not None else np.inf
 report("selfField.pipeAxis", c0 < 1e-9,
        f"charge on the axis of the pipe (a mesh point), n = 14, self field removed: |E|/(k q/R^2) = {c0:.1e}, tol 1e-9")
+
+# 12. The pipe's cyclic ends: the pipe is periodic and meshed uniformly
+#     along its axis, so a charge at the same radius feels the same force,
+#     exact and on the mesh, at any z: in the middle, with its shape cut by
+#     the cyclic end (z = 0.1 < R) and centred on it (z = 0). The self
+#     field is removed there too (its patch and shape unfolded across the
+#     cyclic patch)
+mesh = cc.pipe_blockmesh(1.0, 2.0, 14)
+Ez = []
+for z in (1.0, 0.1, 0.0):
+    E = run(f"self_pipe_end_{z}", np.array([[0.3, 0.4, z]]), np.array([1e-9]), 14, coeffs="radius 0.2;",
+            blockMesh=mesh)
+    Ez.append(E[0] if E is not None else np.full(3, np.inf))
+ref = cc.cylinder_field(np.array([[0.3, 0.4, 1.0]]), np.array([1e-9]), 1.0, 2.0)[0]
+err = [np.linalg.norm(E - ref)/np.linalg.norm(ref) for E in Ez]
+dz = [np.linalg.norm(E - Ez[0])/np.linalg.norm(Ez[0]) for E in Ez[1:]]
+report("selfField.pipeCyclicEnd", max(dz) < 1e-6 and max(err) < 0.05,
+       f"n = 14, a charge at r = 0.5, z = 1, 0.1, 0: force error {err[0]:.2e}, {err[1]:.2e}, {err[2]:.2e} (< 0.05); "
+       f"z = 0.1 and 0 against z = 1: {dz[0]:.1e}, {dz[1]:.1e} (tol 1e-6)")
 PYEOF

@@ -320,6 +320,38 @@ void Foam::meshPoisson::binCells()
 }
 
 
+Foam::List<Foam::vector> Foam::meshPoisson::periodicTranslations() const
+{
+    label nComb = 1;
+    forAll(periodicShifts_, d)
+    {
+        nComb *= 3;
+    }
+    DynamicList<vector> shifts(nComb - 1);
+    for (label comb = 0; comb < nComb; ++comb)
+    {
+        vector shift(Zero);
+        bool identityShift = true;
+        label c = comb;
+        forAll(periodicShifts_, d)
+        {
+            const label n = c % 3 - 1;
+            c /= 3;
+            if (n != 0)
+            {
+                shift += scalar(n)*periodicShifts_[d];
+                identityShift = false;
+            }
+        }
+        if (!identityShift)
+        {
+            shifts.append(shift);
+        }
+    }
+    return List<vector>(std::move(shifts));
+}
+
+
 void Foam::meshPoisson::addPeriodicCopies
 (
     pointField& x,
@@ -339,32 +371,8 @@ void Foam::meshPoisson::addPeriodicCopies
     DynamicList<point> gx(x);
     DynamicList<scalar> gq(q);
     DynamicList<label> go(origin);
-
-    // Every combination of -1, 0, +1 translations but the identity
-    label nComb = 1;
-    forAll(periodicShifts_, d)
+    for (const vector& shift : periodicTranslations())
     {
-        nComb *= 3;
-    }
-    for (label comb = 0; comb < nComb; ++comb)
-    {
-        vector shift(Zero);
-        bool identityShift = true;
-        label c = comb;
-        forAll(periodicShifts_, d)
-        {
-            const label n = c % 3 - 1;
-            c /= 3;
-            if (n != 0)
-            {
-                shift += scalar(n)*periodicShifts_[d];
-                identityShift = false;
-            }
-        }
-        if (identityShift)
-        {
-            continue;
-        }
         for (label i = 0; i < nReal; ++i)
         {
             const point y(x[i] + shift);
@@ -965,29 +973,92 @@ void Foam::meshPoisson::averageOverShapes
         shapeField_[origin[i]] +=
             i < nReal ? sum : sourceSign_[i]*(sourceT_[i].T() & sum);
     }
-    removeSelfFields(nReal);
+    removeSelfFields(origin, nReal);
     Pstream::listCombineGather(shapeField_, plusEqOp<vector>());
     Pstream::listCombineScatter(shapeField_);
     shapeField_ /= shapeSum_;
 }
 
 
-void Foam::meshPoisson::removeSelfFields(const label nReal)
+void Foam::meshPoisson::removeSelfFields
+(
+    const labelUList& origin,
+    const label nReal
+)
 {
     if (!selfField_.valid())
     {
         return;
     }
+    // Unfolded across cyclic patches: the cells near y and near each
+    // translation of y, those at their centre less the translation, and
+    // the shape with its cyclic copies, as deposited
+    const List<vector> translations(periodicTranslations());
     const auto neighbourhood =
-        [&](const point& y, const scalar r, DynamicList<label>& cells)
+        [&]
+        (
+            const point& y, const scalar r, DynamicList<label>& cells,
+            DynamicList<vector>& shifts
+        )
     {
         DynamicList<scalar> dist;
         cellsNear(y, r, cells, dist);
+        shifts.setSize(cells.size());
+        shifts = Zero;
+        if (translations.empty())
+        {
+            return;
+        }
+        // A cell within reach twice (a period shorter than the patch's
+        // diameter) is taken once, where it is nearest to y (the cyclic
+        // faces between its two sides then hold fixed values)
+        Map<label> at(2*cells.size());
+        forAll(cells, j)
+        {
+            at.insert(cells[j], j);
+        }
+        DynamicList<scalar>& d = dist;
+        DynamicList<scalar> moreDist;
+        DynamicList<label> more;
+        for (const vector& t : translations)
+        {
+            if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(r))
+            {
+                cellsNear(y + t, r, more, moreDist);
+                forAll(more, k)
+                {
+                    const auto iter = at.cfind(more[k]);
+                    if (!iter.found())
+                    {
+                        at.insert(more[k], cells.size());
+                        cells.append(more[k]);
+                        shifts.append(-t);
+                        d.append(moreDist[k]);
+                    }
+                    else if (moreDist[k] < d[*iter])
+                    {
+                        shifts[*iter] = -t;
+                        d[*iter] = moreDist[k];
+                    }
+                }
+            }
+        }
     };
     const auto shape =
         [&](const point& y, DynamicList<label>& cells, DynamicList<scalar>& w)
     {
         shapeAt(y, cells, w);
+        DynamicList<label> more;
+        DynamicList<scalar> moreW;
+        for (const vector& t : translations)
+        {
+            if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(radius_))
+            {
+                shapeAt(y + t, more, moreW);
+                cells.append(more);
+                w.append(moreW);
+            }
+        }
     };
     // The wall face nearest to y within r: the wall's tangent plane at
     // the foot of y (as addWallImages) and its image sign
@@ -1012,8 +1083,8 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
         sign = wallSign_[nearest];
         wallTangentPlane(nearest, y, p, n);
     };
-    // The shape at y reaches no coupled patch (cyclic or processor faces
-    // within R: copies carry it); faces within R belong to cells within
+    // The shape at y reaches no processor patch (faces within R: the
+    // neighbour holds part of it); faces within R belong to cells within
     // 2R, the radius being larger than a cell
     const auto clear = [&](const point& y)
     {
@@ -1029,7 +1100,7 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
                 if
                 (
                     mesh_.isInternalFace(f)
-                 || !pbm[pbm.whichPatch(f)].coupled()
+                 || !isA<processorPolyPatch>(pbm[pbm.whichPatch(f)])
                 )
                 {
                     continue;
@@ -1054,35 +1125,53 @@ void Foam::meshPoisson::removeSelfFields(const label nReal)
         }
         return true;
     };
+    // Per charge: the weight of its shape on this processor, its cyclic
+    // copies' included (a translation, T = I and sign 1), and that of its
+    // wall images
+    scalarField wLocal(nReal, 0);
+    scalarField wImaged(nReal, 0);
+    for (label i = 0; i < shapeStart_.size() - 1; ++i)
+    {
+        scalar w = 0;
+        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
+        {
+            w += shapeWeights_[k];
+        }
+        if (i < nReal || (sourceT_[i] == tensor::I && sourceSign_[i] == 1))
+        {
+            wLocal[origin[i]] += w;
+        }
+        else
+        {
+            wImaged[origin[i]] += w;
+        }
+    }
     for (label i = 0; i < nReal; ++i)
     {
-        const label start = shapeStart_[i];
-        const label end = shapeStart_[i + 1];
-        if (end == start)
+        // The whole shape on this processor, no wall image deposited
+        // (else left as it is: a shape cut by a wall or a processor
+        // patch); its cell: the one of its own (not a copy's) with the
+        // largest weight
+        if (wImaged[i] > 0 || wLocal[i] < (1 - 1e-12)*shapeSum_[i])
         {
             continue;
         }
-        // The whole shape on this processor, no copy or image deposited
-        // (else left as it is: a shape cut by a wall or a cyclic patch);
-        // its cell: the one with the largest weight
-        scalar wLocal = 0;
         scalar wMax = 0;
         label celli = -1;
-        for (label k = start; k < end; ++k)
+        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
         {
-            wLocal += shapeWeights_[k];
             if (shapeWeights_[k] > wMax)
             {
                 wMax = shapeWeights_[k];
                 celli = shapeCells_[k];
             }
         }
-        if (wLocal < (1 - 1e-12)*shapeSum_[i])
+        if (celli < 0)
         {
             continue;
         }
         shapeField_[i] -=
-            (qs_[i]*wLocal)
+            (qs_[i]*wLocal[i])
            *selfField_->field
             (
                 xs_[i], celli, neighbourhood, shape, wallPlane, clear

@@ -5,6 +5,7 @@
 #include "shapeSelfField.H"
 #include "pairwiseCoulomb.H"
 #include "emptyFvPatch.H"
+#include "cyclicFvPatch.H"
 #include "surfaceFields.H"
 
 #include <Eigen/Sparse>
@@ -262,6 +263,7 @@ Foam::label Foam::shapeSelfField::holdingCell
 Foam::List<Foam::vector> Foam::shapeSelfField::solve
 (
     const UList<label>& patchCells,
+    const UList<vector>& patchShifts,
     const UList<point>& xs,
     const UList<DynamicList<label>>& shapeCells,
     const UList<DynamicList<scalar>>& shapeWeights,
@@ -283,23 +285,46 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const scalar k = k_;
 
+    List<vector> result(xs.size(), Zero);
     forAll(patchCells, i)
     {
         local_[patchCells[i]] = i;
     }
 
-    // The patch's faces, each once: internal faces with the patch-local
-    // index of each side (-1: a cell around the patch, holding the exact
-    // value at its centre) and boundary faces with a fixed value
-    DynamicList<label> faces;
+    // The patch's faces, each once, with the patch-local index of each
+    // side (-1: a cell around the patch, holding the exact value at its
+    // centre, outAt in the patch's unfolded frame): internal faces and
+    // cyclic faces between two patch cells (from the owner patch's side),
+    // and boundary faces with a fixed value (at bFaceAt)
     DynamicList<label> faceOwn, faceNei;
+    DynamicList<scalar> faceCoeff, faceWeight, faceMagSf;
+    DynamicList<vector> faceSf, faceCorr;
+    DynamicList<point> faceOutAt;
     DynamicList<label> bFaceRow;
     DynamicList<point> bFaceAt;
     DynamicList<vector> bFaceSf;
     DynamicList<scalar> bFaceCoeff;
+    const auto addFace =
+        [&]
+        (
+            const label lo, const label ln, const scalar a, const scalar w,
+            const vector& sf, const scalar msf, const vector& corr,
+            const point& outAt
+        )
+    {
+        faceOwn.append(lo);
+        faceNei.append(ln);
+        faceCoeff.append(a);
+        faceWeight.append(w);
+        faceSf.append(sf);
+        faceMagSf.append(msf);
+        faceCorr.append(corr);
+        faceOutAt.append(outAt);
+    };
     forAll(patchCells, i)
     {
         const label c = patchCells[i];
+        const vector& shift = patchShifts[i];
         for (const label f : mesh_.cells()[c])
         {
             if (f < nInternal)
@@ -310,35 +335,68 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
                 // whose owner lies outside
                 if ((own[f] == c) || lo < 0)
                 {
-                    faces.append(f);
-                    faceOwn.append(lo);
-                    faceNei.append(ln);
+                    const label o = lo < 0 ? own[f] : nei[f];
+                    addFace
+                    (
+                        lo, ln, internalCoeff_[f], weights[f], Sf[f],
+                        magSf[f], corrVec[f], C[o] + shift
+                    );
                 }
+                continue;
             }
-            else
+            const label patchi = pbm.whichPatch(f);
+            const label facei = f - pbm[patchi].start();
+            const scalar b = boundaryCoeff_[patchi][facei];
+            if (!(b > 0))
             {
-                const label patchi = pbm.whichPatch(f);
-                const label facei = f - pbm[patchi].start();
-                const scalar b = boundaryCoeff_[patchi][facei];
-                if (b > 0)
+                continue;
+            }
+            const point at(boundaryPoint_[patchi][facei] + shift);
+            const cyclicFvPatch* cyc =
+                isA<cyclicFvPatch>(mesh_.boundary()[patchi]);
+            if (cyc)
+            {
+                // Across a cyclic patch to a patch cell where the unfolded
+                // frame puts it: a face between two unknowns
+                const label cn = cyc->neighbFvPatch().faceCells()[facei];
+                const label ln = local_[cn];
+                if
+                (
+                    ln >= 0
+                 && mag(C[cn] + patchShifts[ln] - at)
+                  < 1e-6*mag(at - C[c] - shift)
+                )
                 {
-                    bFaceRow.append(i);
-                    bFaceAt.append(boundaryPoint_[patchi][facei]);
-                    bFaceSf.append(Sf.boundaryField()[patchi][facei]);
-                    bFaceCoeff.append(b);
+                    if (cyc->owner())
+                    {
+                        addFace
+                        (
+                            i, ln, b,
+                            weights.boundaryField()[patchi][facei],
+                            Sf.boundaryField()[patchi][facei],
+                            magSf.boundaryField()[patchi][facei],
+                            corrVec.boundaryField()[patchi][facei],
+                            point::zero
+                        );
+                    }
+                    continue;
                 }
             }
+            bFaceRow.append(i);
+            bFaceAt.append(at);
+            bFaceSf.append(Sf.boundaryField()[patchi][facei]);
+            bFaceCoeff.append(b);
         }
     }
 
     // The matrix (negated: symmetric positive definite), factorised once
     // for every shape
     std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(2*faces.size() + n);
+    triplets.reserve(2*faceOwn.size() + n);
     scalarField diag(n, 0);
-    forAll(faces, j)
+    forAll(faceOwn, j)
     {
-        const scalar a = internalCoeff_[faces[j]];
+        const scalar a = faceCoeff[j];
         const label lo = faceOwn[j], ln = faceNei[j];
         if (lo >= 0)
         {
@@ -374,9 +432,8 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         Eigen::MetisOrdering<int>
     > ldlt(M);
 
-    List<vector> result(xs.size(), Zero);
-    scalarField phiOut(faces.size()), phiB(bFaceRow.size());
-    vectorField gradOut(faces.size());
+    scalarField phiOut(faceOwn.size()), phiB(bFaceRow.size());
+    vectorField gradOut(faceOwn.size());
     vectorField g(n);
     forAll(xs, s)
     {
@@ -406,15 +463,11 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             }
         };
         vector unused;
-        forAll(faces, j)
+        forAll(faceOwn, j)
         {
-            const label o =
-                faceOwn[j] < 0 ? own[faces[j]]
-              : faceNei[j] < 0 ? nei[faces[j]]
-              : -1;
-            if (o >= 0)
+            if (faceOwn[j] < 0 || faceNei[j] < 0)
             {
-                exact(C[o], phiOut[j], gradOut[j]);
+                exact(faceOutAt[j], phiOut[j], gradOut[j]);
             }
         }
         forAll(bFaceRow, j)
@@ -433,12 +486,12 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         {
             rhs0[local_[cells[j]]] += w[j]/wSum;
         }
-        forAll(faces, j)
+        forAll(faceOwn, j)
         {
             const label l = faceOwn[j] < 0 ? faceNei[j] : faceOwn[j];
             if (faceOwn[j] < 0 || faceNei[j] < 0)
             {
-                rhs0[l] += internalCoeff_[faces[j]]*phiOut[j];
+                rhs0[l] += faceCoeff[j]*phiOut[j];
             }
         }
         forAll(bFaceRow, j)
@@ -451,21 +504,20 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         const auto gaussGrad = [&](const Eigen::VectorXd& p, const bool fixed)
         {
             g = Zero;
-            forAll(faces, j)
+            forAll(faceOwn, j)
             {
-                const label f = faces[j];
                 const label lo = faceOwn[j], ln = faceNei[j];
                 const scalar out = fixed ? phiOut[j] : 0;
                 const scalar phiF =
-                    weights[f]*(lo >= 0 ? p[lo] : out)
-                  + (1 - weights[f])*(ln >= 0 ? p[ln] : out);
+                    faceWeight[j]*(lo >= 0 ? p[lo] : out)
+                  + (1 - faceWeight[j])*(ln >= 0 ? p[ln] : out);
                 if (lo >= 0)
                 {
-                    g[lo] += phiF*Sf[f];
+                    g[lo] += phiF*faceSf[j];
                 }
                 if (ln >= 0)
                 {
-                    g[ln] -= phiF*Sf[f];
+                    g[ln] -= phiF*faceSf[j];
                 }
             }
             if (fixed)
@@ -487,15 +539,15 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         const auto correction = [&](const bool fixed)
         {
             Eigen::VectorXd c(Eigen::VectorXd::Zero(n));
-            forAll(faces, j)
+            forAll(faceOwn, j)
             {
-                const label f = faces[j];
                 const label lo = faceOwn[j], ln = faceNei[j];
                 const vector out = fixed ? gradOut[j] : Zero;
                 const vector gf =
-                    weights[f]*(lo >= 0 ? g[lo] : out)
-                  + (1 - weights[f])*(ln >= 0 ? g[ln] : out);
-                const scalar flux = eps_*magSf[f]*(corrVec[f] & gf);
+                    faceWeight[j]*(lo >= 0 ? g[lo] : out)
+                  + (1 - faceWeight[j])*(ln >= 0 ? g[ln] : out);
+                const scalar flux =
+                    eps_*faceMagSf[j]*(faceCorr[j] & gf);
                 if (lo >= 0)
                 {
                     c[lo] += flux;
