@@ -218,6 +218,9 @@ badCase negativeNonOrthCorrectors 'electrostaticsModel directCoulomb;' \
 badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldRadius 1; }' \
     'Entry selfFieldRadius = 1 in .* must be 0 .* or in \[2, 10\] shape radii'
+badCase unknownSelfFieldSampling 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldSampling cells; }' \
+    'Entry selfFieldSampling = cells in .* must be one of 2\(points charges\)'
 badCase negativeNonOrthTolerance 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nonOrthogonalTolerance -1; }' \
     'Entry nonOrthogonalTolerance = -1 in .* must be in \[0, 1\)'

@@ -288,4 +288,24 @@ dz = [np.linalg.norm(E - Ez[0])/np.linalg.norm(Ez[0]) for E in Ez[1:]]
 report("selfField.pipeCyclicEnd", max(dz) < 1e-6 and max(err) < 0.05,
        f"n = 14, a charge at r = 0.5, z = 1, 0.1, 0: force error {err[0]:.2e}, {err[1]:.2e}, {err[2]:.2e} (< 0.05); "
        f"z = 0.1 and 0 against z = 1: {dz[0]:.1e}, {dz[1]:.1e} (tol 1e-6)")
+
+# 13. Between the mesh points the points' self field is interpolated; per
+#     charge (selfFieldSampling charges) it is solved at the charge itself.
+#     Single charges off the mesh points of the pipe (n = 14): between two
+#     points of a cross-section, inside a cell and halfway between two
+#     axial levels
+a = np.array([0.28048753, 0.40287047, 1.0]); b = np.array([0.33509017, 0.3963812, 1.0])
+xs = [a + 0.375*(b - a), np.array([0.3, 0.4, 1.0]), a + np.array([0, 0, 0.025])]
+errs = {}
+for sampling in ("points", "charges"):
+    errs[sampling] = []
+    for k, x in enumerate(xs):
+        E = run(f"self_pipe_off_{sampling}_{k}", x[None], np.array([1e-9]), 14,
+                coeffs=f"radius 0.2; selfFieldSampling {sampling};", blockMesh=mesh)
+        ref = cc.cylinder_field(x[None], np.array([1e-9]), 1.0, 2.0)[0]
+        errs[sampling].append(np.linalg.norm(E[0] - ref)/np.linalg.norm(ref) if E is not None else np.inf)
+p_, c_ = errs["points"], errs["charges"]
+report("selfField.perCharge", max(c_) < 0.01 and max(c_) < max(p_)/2,
+       f"pipe n = 14, single charges off the mesh points: force error per charge {c_[0]:.2e}, {c_[1]:.2e}, {c_[2]:.2e} "
+       f"(< 0.01), at the points {p_[0]:.2e}, {p_[1]:.2e}, {p_[2]:.2e} (largest at least 2x the per-charge one)")
 PYEOF

@@ -70,7 +70,7 @@ METHODS = (
 )
 
 # Receivers that are not dictionaries (argList: command-line options)
-NOT_DICTIONARIES = {'args'}
+NOT_DICTIONARIES = {'args', 'selfFieldSamplingTypeNames'}
 
 # Project helpers that read the entries named by their literal arguments
 HELPERS = (

@@ -36,6 +36,14 @@ Foam::meshPoisson::correctionTypeNames
 });
 
 
+const Foam::Enum<Foam::meshPoisson::selfFieldSamplingType>
+Foam::meshPoisson::selfFieldSamplingTypeNames
+({
+    { selfFieldSamplingType::points, "points" },
+    { selfFieldSamplingType::charges, "charges" },
+});
+
+
 namespace
 {
     // Volt = kg m^2 s^-3 A^-1
@@ -154,6 +162,30 @@ Foam::scalar Foam::meshPoisson::readSelfFieldRadius() const
             << "which it is found and removed)" << exit(FatalIOError);
     }
     return D;
+}
+
+
+Foam::meshPoisson::selfFieldSamplingType
+Foam::meshPoisson::readSelfFieldSampling() const
+{
+    const word key("selfFieldSampling");
+    const word w
+    (
+        coeffs_.lookupOrDefault<word>
+        (
+            key,
+            selfFieldSamplingTypeNames[selfFieldSamplingType::points]
+        )
+    );
+    if (!selfFieldSamplingTypeNames.found(w))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry " << key << " = " << w << " in "
+            << coeffs_.name().c_str() << " must be one of "
+            << selfFieldSamplingTypeNames.names()
+            << " (where the self field is found)" << exit(FatalIOError);
+    }
+    return selfFieldSamplingTypeNames[w];
 }
 
 
@@ -1206,6 +1238,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     nNonOrthCorr_(readNonOrthCorrectors()),
     nonOrthTolerance_(readNonOrthTolerance()),
     selfFieldRadius_(readSelfFieldRadius()),
+    selfFieldSampling_(readSelfFieldSampling()),
     nEvaluations_(0),
     solved_(false),
     periodicShifts_(),
@@ -1306,6 +1339,11 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     if (correction_ == correctionType::shaped)
     {
         Info<< ", images in " << wallC_.size() << " wall faces";
+        if (selfFieldRadius_ > 0)
+        {
+            Info<< ", self field removed at the "
+                << selfFieldSamplingTypeNames[selfFieldSampling_];
+        }
     }
     Info<< "), "
         << (
@@ -1378,7 +1416,8 @@ void Foam::meshPoisson::solve()
                 radius_,
                 selfFieldRadius_*radius_,
                 nNonOrthCorr_,
-                nonOrthTolerance_
+                nonOrthTolerance_,
+                selfFieldSampling_ == selfFieldSamplingType::charges
             )
         );
     }

@@ -24,7 +24,8 @@ Foam::shapeSelfField::shapeSelfField
     const scalar shapeRadius,
     const scalar patchRadius,
     const label nNonOrthCorr,
-    const scalar tolerance
+    const scalar tolerance,
+    const bool perCharge
 )
 :
     mesh_(mesh),
@@ -33,6 +34,7 @@ Foam::shapeSelfField::shapeSelfField
     patchRadius_(patchRadius),
     nNonOrthCorr_(nNonOrthCorr),
     tolerance_(tolerance),
+    perCharge_(perCharge),
     internalCoeff_(upper),
     boundaryCoeff_(mesh.boundary().size()),
     boundaryPoint_(mesh.boundary().size()),
