@@ -1049,7 +1049,6 @@ void Foam::meshPoisson::removeSelfFields
         {
             at.insert(cells[j], j);
         }
-        DynamicList<scalar>& d = dist;
         DynamicList<scalar> moreDist;
         DynamicList<label> more;
         for (const vector& t : translations)
@@ -1065,12 +1064,12 @@ void Foam::meshPoisson::removeSelfFields
                         at.insert(more[k], cells.size());
                         cells.append(more[k]);
                         shifts.append(-t);
-                        d.append(moreDist[k]);
+                        dist.append(moreDist[k]);
                     }
-                    else if (moreDist[k] < d[*iter])
+                    else if (moreDist[k] < dist[*iter])
                     {
                         shifts[*iter] = -t;
-                        d[*iter] = moreDist[k];
+                        dist[*iter] = moreDist[k];
                     }
                 }
             }

@@ -287,7 +287,6 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const scalar k = k_;
 
-    List<vector> result(xs.size(), Zero);
     forAll(patchCells, i)
     {
         local_[patchCells[i]] = i;
@@ -353,20 +352,22 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             {
                 continue;
             }
+            // The neighbour's centre across a coupled face (else the face
+            // centre), in the patch's unfolded frame
             const point at(boundaryPoint_[patchi][facei] + shift);
             const cyclicFvPatch* cyc =
                 isA<cyclicFvPatch>(mesh_.boundary()[patchi]);
             if (cyc)
             {
-                // Across a cyclic patch to a patch cell where the unfolded
-                // frame puts it: a face between two unknowns
+                // Across a cyclic patch to a patch cell that the unfolded
+                // frame puts there: a face between two unknowns
                 const label cn = cyc->neighbFvPatch().faceCells()[facei];
                 const label ln = local_[cn];
+                const scalar delta = mag(at - C[c] - shift);
                 if
                 (
                     ln >= 0
-                 && mag(C[cn] + patchShifts[ln] - at)
-                  < 1e-6*mag(at - C[c] - shift)
+                 && mag(C[cn] + patchShifts[ln] - at) < 1e-6*delta
                 )
                 {
                     if (cyc->owner())
@@ -434,6 +435,7 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         Eigen::MetisOrdering<int>
     > ldlt(M);
 
+    List<vector> result(xs.size(), Zero);
     scalarField phiOut(faceOwn.size()), phiB(bFaceRow.size());
     vectorField gradOut(faceOwn.size());
     vectorField g(n);
