@@ -10,37 +10,11 @@ template<class CloudType>
 Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
 (
     const dictionary& dict,
-    CloudType& owner,
-    const word& type
-)
-:
-    DirectCoulomb<CloudType>(dict, owner, type),
-    rCut_
-    (
-        this->coeffDict().found("rCut")
-      ? this->coeffDict().template get<scalar>("rCut")
-      : -1
-    )
-{
-    if (!(rCut_ > 0) || !std::isfinite(rCut_))
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry rCut (cutoff radius [m]) in "
-            << this->coeffDict().name().c_str() << " is "
-            << (this->coeffDict().found("rCut") ? "out of range" : "missing")
-            << ": it must be given, finite and > 0" << exit(FatalIOError);
-    }
-}
-
-
-template<class CloudType>
-Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
-(
-    const dictionary& dict,
     CloudType& owner
 )
 :
-    CutoffCoulomb<CloudType>(dict, owner, typeName)
+    CoulombElectrostatics<CloudType>(dict, owner, typeName),
+    rCut_(this->readCutoff(this->coeffDict()))
 {
     Info<< "    Pairwise Coulomb sum within rCut = " << rCut_
         << " m (cell list), medium epsilonR = "
@@ -54,7 +28,7 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
     const CutoffCoulomb<CloudType>& em
 )
 :
-    DirectCoulomb<CloudType>(em),
+    CoulombElectrostatics<CloudType>(em),
     rCut_(em.rCut_)
 {}
 
@@ -70,13 +44,7 @@ void Foam::CutoffCoulomb<CloudType>::calculate()
     pointField xS;
     scalarField qS;
     labelList ids;
-    this->gatherHalo
-    (
-        this->contactCorrection_ != 0
-      ? max(rCut_, this->contactRange())
-      : rCut_,
-        xS, qS, ids
-    );
+    this->gatherPairHalo(rCut_, xS, qS, ids);
 
     const label n = this->owner().size();
     const pointField x(SubList<point>(xS, n));

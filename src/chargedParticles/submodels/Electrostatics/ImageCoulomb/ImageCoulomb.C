@@ -210,11 +210,12 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
     CloudType& owner
 )
 :
-    CutoffCoulomb<CloudType>(dict, owner, typeName),
+    CoulombElectrostatics<CloudType>(dict, owner, typeName),
+    rCut_(this->readCutoff(this->coeffDict())),
     planes_(wallPlanes(this->coeffDict(), owner.mesh()))
 {
     Info<< "    Pairwise Coulomb sum and grounded-wall image charges within"
-        << " rCut = " << this->rCut() << " m (cell list), medium epsilonR = "
+        << " rCut = " << rCut_ << " m (cell list), medium epsilonR = "
         << this->coulomb_.epsilonR() << nl
         << "    " << planes_.size() << " wall planes (infinite; normal,"
         << " point):" << nl;
@@ -242,7 +243,8 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
     const ImageCoulomb<CloudType>& em
 )
 :
-    CutoffCoulomb<CloudType>(em),
+    CoulombElectrostatics<CloudType>(em),
+    rCut_(em.rCut_),
     planes_(em.planes_)
 {}
 
@@ -260,20 +262,14 @@ void Foam::ImageCoulomb<CloudType>::calculate()
     pointField xS;
     scalarField qS;
     labelList ids;
-    this->gatherHalo
-    (
-        this->contactCorrection_ != 0
-      ? max(this->rCut(), this->contactRange())
-      : this->rCut(),
-        xS, qS, ids
-    );
+    this->gatherPairHalo(rCut_, xS, qS, ids);
 
     const label n = this->owner().size();
     const pointField x(SubList<point>(xS, n));
     vectorField E(n, Zero);
     planes_.addFieldsWithinCutoff
     (
-        this->coulomb_, x, xS, qS, this->rCut(), E, 0
+        this->coulomb_, x, xS, qS, rCut_, E, 0
     );
 
     this->setFields(xS, qS, ids, E);

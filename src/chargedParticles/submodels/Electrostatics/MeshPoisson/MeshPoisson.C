@@ -45,7 +45,7 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
     CloudType& owner
 )
 :
-    DirectCoulomb<CloudType>(dict, owner, typeName),
+    CoulombElectrostatics<CloudType>(dict, owner, typeName),
     solver_
     (
         new meshPoisson
@@ -72,7 +72,7 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
     const MeshPoisson<CloudType>& em
 )
 :
-    DirectCoulomb<CloudType>(em),
+    CoulombElectrostatics<CloudType>(em),
     solver_(em.solver_)
 {}
 
