@@ -5,7 +5,7 @@
 #include "ChargedCloud.H"
 #include "ElectrostaticsModel.H"
 #include "TriboChargingModel.H"
-#include "EllipsoidCollision.H"
+#include "ContactModel.H"
 #include "SceneCheck.H"
 #include "inputLimits.H"
 
@@ -46,15 +46,15 @@ void Foam::ChargedCloud<CloudType>::setModels()
     // Contact charging acts on the contacts the collision model lists
     if (triboCharging().active())
     {
-        collisionModelType* ec =
-            dynamic_cast<collisionModelType*>(&this->collision());
+        contactModelType* ec =
+            dynamic_cast<contactModelType*>(&this->collision());
         if (!ec)
         {
             FatalIOErrorInFunction(this->subModelProperties())
                 << "Entry triboChargingModel "
                 << triboCharging().modelType()
                 << " needs collisionModel "
-                << collisionModelType::typeName << ", not "
+                << "ellipsoidCollision (a model that lists its contacts), not "
                 << this->collision().type() << exit(FatalIOError);
         }
         ec->recordContacts();
@@ -63,8 +63,8 @@ void Foam::ChargedCloud<CloudType>::setModels()
     // The pairs in contact for the electrostatics (Ruan Eq. 44)
     if (electrostatics().active() && electrostatics().readsContacts())
     {
-        collisionModelType* ec =
-            dynamic_cast<collisionModelType*>(&this->collision());
+        contactModelType* ec =
+            dynamic_cast<contactModelType*>(&this->collision());
         if (ec)
         {
             ec->keepCollisionRecords();
@@ -489,8 +489,8 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
     // forces of the new charges
     if (triboCharging().active())
     {
-        const collisionModelType& ec =
-            static_cast<const collisionModelType&>(this->collision());
+        const contactModelType& ec =
+            static_cast<const contactModelType&>(this->collision());
         triboCharging().transfer(ec.contacts());
     }
 

@@ -5,7 +5,7 @@
 #include "EllipsoidCloud.H"
 #include "cpuTime.H"
 #include "CollisionModel.H"
-#include "EllipsoidCollision.H"
+#include "ContactModel.H"
 #include "inputLimits.H"
 #include "subCycleTime.H"
 #include "fvMatrices.H"
@@ -44,13 +44,13 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     cloud.initialiseForces();
 
     // The first half kick, the drift and the rotation in one pass
-    // (EllipsoidParcel::move); ellipsoidCollision gathers its contact
+    // (EllipsoidParcel::move); a contact model gathers its contact
     // bodies as the parcels finish
-    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
-        ellipsoidCollisionType;
+    typedef ContactModel<typename CloudType::collidingCloudType>
+        contactModelType;
     gatherer_ =
         this->collision().active()
-      ? dynamic_cast<ellipsoidCollisionType*>(&this->collision())
+      ? dynamic_cast<contactModelType*>(&this->collision())
       : nullptr;
     if (gatherer_)
     {
@@ -507,11 +507,14 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
         trackingTolerance_ > 0
      && this->solution().active()
      && this->collision().active()
-     && this->collision().type() != "ellipsoidCollision"
+     && !dynamic_cast
+        <
+            const ContactModel<typename CloudType::collidingCloudType>*
+        >(&this->collision())
     )
     {
-        // Other collision models (OpenFOAM's pairCollision) read the
-        // tracked positions, not the centres
+        // Contact models read the centres (gatherBody); other collision
+        // models (OpenFOAM's pairCollision) read the tracked positions
         Info<< "    Lazy tracking off: collision model "
             << this->collision().type() << " reads the tracked positions"
             << endl;
@@ -849,13 +852,13 @@ void Foam::EllipsoidCloud<CloudType>::info()
     // rotational energy of spheres, replaced here by the ellipsoids' one
     CloudType::cloudType::info();
 
-    // Contacts: counted by ellipsoidCollision (it writes the collision
+    // Contacts: counted by a contact model (it writes the collision
     // records only when they are read); other models keep the records of
     // the current contacts only
-    typedef EllipsoidCollision<typename CloudType::collidingCloudType>
-        ellipsoidCollisionType;
+    typedef ContactModel<typename CloudType::collidingCloudType>
+        contactModelType;
     const auto* ecPtr =
-        dynamic_cast<const ellipsoidCollisionType*>(&this->collision());
+        dynamic_cast<const contactModelType*>(&this->collision());
 
     scalar nPair = 0, nWall = 0;
     const scalar nParcels = returnReduce(scalar(this->size()), sumOp<scalar>());

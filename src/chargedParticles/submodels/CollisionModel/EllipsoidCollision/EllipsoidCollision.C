@@ -1375,7 +1375,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     CloudType& owner
 )
 :
-    CollisionModel<CloudType>(dict, owner, typeName),
+    ContactModel<CloudType>(dict, owner, typeName),
     pp_(),
     pw_(),
     tangential_(tangentialModel::mindlin),
@@ -1597,7 +1597,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     const EllipsoidCollision<CloudType>& cm
 )
 :
-    CollisionModel<CloudType>(cm),
+    ContactModel<CloudType>(cm),
     il_(cm.owner().mesh())
 {
     NotImplemented;

@@ -290,7 +290,7 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     const scalar vol = gSum(mesh.cellVolumes());
     reduce(volParticles, sumOp<scalar>());
     const auto* ec =
-        dynamic_cast<const typename CloudType::collisionModelType*>
+        dynamic_cast<const typename CloudType::contactModelType*>
         (
             &cloud_.collision()
         );
