@@ -201,6 +201,10 @@ def main():
     ap.add_argument("--cloud", type=int, default=0,
                     help="also a random cloud of this many charges of +-1 nC within 0.85 of "
                          "the centre (axis): median and largest force error")
+    ap.add_argument("--pairs", type=int, default=0,
+                    help="also this many pairs of opposite charges (+-1 nC) at random places "
+                         "within 0.85 of the centre (the pipe: of its axis, anywhere along it; "
+                         "its first pair 0.85 apart across the cyclic end): the larger force error")
     a = ap.parse_args()
     work = a.work or os.path.join(HERE, "runs", a.cavity)
     rng = np.random.default_rng(5)
@@ -236,6 +240,21 @@ def main():
         if box:
             xc = centre + 0.85*(2*cr.random((a.cloud, 3)) - 1)
         cases.append((f"cloud of {a.cloud}", xc, cr.choice([-1e-9, 1e-9], a.cloud)))
+    pr = np.random.default_rng(5)
+    for k in range(a.pairs):
+        if pipe and k == 0:
+            x = np.array([[0.3, 0.4, 0.1], [-0.5, 0.2, 1.95]])
+        else:
+            while True:
+                x = pr.uniform(-0.85, 0.85, size=(2, 3))
+                if pipe:
+                    x[:, 2] = pr.uniform(0, length, 2)
+                    if np.all(np.hypot(x[:, 0], x[:, 1]) < 0.85):
+                        break
+                elif np.all(np.linalg.norm(x, axis=1) < 0.85):
+                    x += centre
+                    break
+        cases.append((f"pair {k}", x, np.array([1e-9, -1e-9])))
     print("| case | |E exact| [V/m] | " + " | ".join(f"error n = {n}" for n in a.n) + " |")
     print("|---|--:|" + "--:|"*len(a.n))
     for name, x, q in cases:
