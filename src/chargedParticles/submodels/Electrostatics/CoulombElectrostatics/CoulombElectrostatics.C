@@ -53,7 +53,6 @@ Foam::scalar Foam::CoulombElectrostatics<CloudType>::readCutoff
 template<class CloudType>
 void Foam::CoulombElectrostatics<CloudType>::gatherPairHalo
 (
-    const scalar rCut,
     pointField& xS,
     scalarField& qS,
     labelList& ids
@@ -61,7 +60,7 @@ void Foam::CoulombElectrostatics<CloudType>::gatherPairHalo
 {
     this->gatherHalo
     (
-        contactCorrection_ != 0 ? max(rCut, contactRange()) : rCut,
+        contactCorrection_ != 0 ? max(rCut_, contactRange()) : rCut_,
         xS, qS, ids
     );
 }
@@ -210,7 +209,8 @@ Foam::CoulombElectrostatics<CloudType>::CoulombElectrostatics
 (
     const dictionary& dict,
     CloudType& owner,
-    const word& type
+    const word& type,
+    const bool cutoff
 )
 :
     ElectrostaticsModel<CloudType>(dict, owner, type),
@@ -219,7 +219,8 @@ Foam::CoulombElectrostatics<CloudType>::CoulombElectrostatics
     (
         Foam::pow(owner.constProps().stiffnessRatio(), 0.4)
       - 1
-    )
+    ),
+    rCut_(cutoff ? readCutoff(this->coeffDict()) : -1)
 {}
 
 
@@ -231,7 +232,8 @@ Foam::CoulombElectrostatics<CloudType>::CoulombElectrostatics
 :
     ElectrostaticsModel<CloudType>(em),
     coulomb_(em.coulomb_),
-    contactCorrection_(em.contactCorrection_)
+    contactCorrection_(em.contactCorrection_),
+    rCut_(em.rCut_)
 {}
 
 

@@ -13,10 +13,9 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
     CloudType& owner
 )
 :
-    CoulombElectrostatics<CloudType>(dict, owner, typeName),
-    rCut_(this->readCutoff(this->coeffDict()))
+    CoulombElectrostatics<CloudType>(dict, owner, typeName, true)
 {
-    Info<< "    Pairwise Coulomb sum within rCut = " << rCut_
+    Info<< "    Pairwise Coulomb sum within rCut = " << this->rCut_
         << " m (cell list), medium epsilonR = "
         << this->coulomb_.epsilonR() << endl;
 }
@@ -28,8 +27,7 @@ Foam::CutoffCoulomb<CloudType>::CutoffCoulomb
     const CutoffCoulomb<CloudType>& em
 )
 :
-    CoulombElectrostatics<CloudType>(em),
-    rCut_(em.rCut_)
+    CoulombElectrostatics<CloudType>(em)
 {}
 
 
@@ -44,12 +42,12 @@ void Foam::CutoffCoulomb<CloudType>::calculate()
     pointField xS;
     scalarField qS;
     labelList ids;
-    this->gatherPairHalo(rCut_, xS, qS, ids);
+    this->gatherPairHalo(xS, qS, ids);
 
     const label n = this->owner().size();
     const pointField x(SubList<point>(xS, n));
     vectorField E(n, Zero);
-    this->coulomb_.addFieldsWithinCutoff(x, xS, qS, rCut_, E, 0);
+    this->coulomb_.addFieldsWithinCutoff(x, xS, qS, this->rCut_, E, 0);
 
     this->setFields(xS, qS, ids, E);
 }

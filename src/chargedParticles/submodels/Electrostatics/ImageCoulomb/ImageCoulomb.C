@@ -210,12 +210,11 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
     CloudType& owner
 )
 :
-    CoulombElectrostatics<CloudType>(dict, owner, typeName),
-    rCut_(this->readCutoff(this->coeffDict())),
+    CoulombElectrostatics<CloudType>(dict, owner, typeName, true),
     planes_(wallPlanes(this->coeffDict(), owner.mesh()))
 {
     Info<< "    Pairwise Coulomb sum and grounded-wall image charges within"
-        << " rCut = " << rCut_ << " m (cell list), medium epsilonR = "
+        << " rCut = " << this->rCut_ << " m (cell list), medium epsilonR = "
         << this->coulomb_.epsilonR() << nl
         << "    " << planes_.size() << " wall planes (infinite; normal,"
         << " point):" << nl;
@@ -244,7 +243,6 @@ Foam::ImageCoulomb<CloudType>::ImageCoulomb
 )
 :
     CoulombElectrostatics<CloudType>(em),
-    rCut_(em.rCut_),
     planes_(em.planes_)
 {}
 
@@ -262,14 +260,14 @@ void Foam::ImageCoulomb<CloudType>::calculate()
     pointField xS;
     scalarField qS;
     labelList ids;
-    this->gatherPairHalo(rCut_, xS, qS, ids);
+    this->gatherPairHalo(xS, qS, ids);
 
     const label n = this->owner().size();
     const pointField x(SubList<point>(xS, n));
     vectorField E(n, Zero);
     planes_.addFieldsWithinCutoff
     (
-        this->coulomb_, x, xS, qS, rCut_, E, 0
+        this->coulomb_, x, xS, qS, this->rCut_, E, 0
     );
 
     this->setFields(xS, qS, ids, E);
