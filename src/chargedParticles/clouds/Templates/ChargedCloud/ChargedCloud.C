@@ -53,8 +53,8 @@ void Foam::ChargedCloud<CloudType>::setModels()
             FatalIOErrorInFunction(this->subModelProperties())
                 << "Entry triboChargingModel "
                 << triboCharging().modelType()
-                << " needs collisionModel "
-                << "ellipsoidCollision (a model that lists its contacts), not "
+                << " needs collisionModel ellipsoidCollision (a model that"
+                << " lists its contacts), not "
                 << this->collision().type() << exit(FatalIOError);
         }
         ec->recordContacts();

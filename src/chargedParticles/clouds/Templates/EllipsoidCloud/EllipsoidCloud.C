@@ -46,8 +46,6 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     // The first half kick, the drift and the rotation in one pass
     // (EllipsoidParcel::move); a contact model gathers its contact
     // bodies as the parcels finish
-    typedef ContactModel<typename CloudType::collidingCloudType>
-        contactModelType;
     gatherer_ =
         this->collision().active()
       ? dynamic_cast<contactModelType*>(&this->collision())
@@ -507,10 +505,7 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
         trackingTolerance_ > 0
      && this->solution().active()
      && this->collision().active()
-     && !dynamic_cast
-        <
-            const ContactModel<typename CloudType::collidingCloudType>*
-        >(&this->collision())
+     && !isA<contactModelType>(this->collision())
     )
     {
         // Contact models read the centres (gatherBody); other collision
@@ -855,8 +850,6 @@ void Foam::EllipsoidCloud<CloudType>::info()
     // Contacts: counted by a contact model (it writes the collision
     // records only when they are read); other models keep the records of
     // the current contacts only
-    typedef ContactModel<typename CloudType::collidingCloudType>
-        contactModelType;
     const auto* ecPtr =
         dynamic_cast<const contactModelType*>(&this->collision());
 
