@@ -151,13 +151,13 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         add("- **Ellipsoids** can only be run by chargedFoam, so their bed has to be poured by")
         add(f"  chargedFoam itself. The pour cost {p['processWall']:.0f} s for {el['n']} ellipsoids "
             f"({p['subSteps']} sub-steps, {perStep:.3f} ms per ellipsoid-step).")
-        add(f"  N is therefore {el['n']}, not 10^4, in a {el['base']*1e3:g} x {el['base']*1e3:g} mm box, "
-            f"so that the bed (mean height of the centres {w.get('zmean', float('nan'))*1e3:.1f} mm) is about as "
-            "deep as the spheres'.")
+        add(f"  The bed holds {el['n']} ellipsoids in a {el['base']*1e3:g} x {el['base']*1e3:g} mm box "
+            f"(mean height of the centres {w.get('zmean', float('nan'))*1e3:.1f} mm).")
         add("  The pour uses the tutorial's recipe, a large deltaT with adaptive sub-cycles, and is not")
-        add("  timed. The window restarts from it at the spheres' time step. The cost per particle-step")
-        add("  is nearly independent of N (all codes are O(N) per step), but the ellipsoid figure is for")
-        add("  a smaller, still-settling bed of another shape. Compare it with cfSpheres only roughly.")
+        add("  timed. The window restarts from it at the spheres' time step. The ellipsoids have more")
+        add("  contacts per particle than the spheres (sanity table), so the cost is also given per")
+        add("  contact: loop time / (steps x contacts), contacts = particle-particle pairs + wall")
+        add("  contacts of the last step.")
     add("- **Timing.** OpenFOAM solvers: the difference of `ExecutionTime` (process CPU time) printed")
     add("  after step 1 and after step M-1 of the M-step window, over M-2 steps. The last step, which")
     add("  writes the final state, and the start-up are excluded. LIGGGHTS: its `Loop time` is wall")

@@ -58,9 +58,9 @@ CONFIGS = {
         window=1000,        # timed steps of every sphere code
         repeats=5,          # cfSpheres and LIGGGHTS window runs, taken in
                             # turns (noisy machines); medians reported
-        nEllipsoids=2000,   # ellipsoids (own pour, see README)
-        ellipsoidBase=20e-3,
-        ellipsoidSettleTime=0.15,
+        nEllipsoids=10000,  # ellipsoids (own pour, see README)
+        ellipsoidBase=40e-3,
+        ellipsoidSettleTime=0.2,
         ellipsoidWindow=200,
     ),
     "quick": dict(
@@ -160,7 +160,7 @@ def run_liggghts(case, env, cpu_loop=False):
 def parse_openfoam_log(path):
     text = open(path).read()
     steps = re.split(r"^Time = ", text, flags=re.M)[1:]
-    times, execs, clocks, subcycles, ke, coord = [], [], [], [], [], []
+    times, execs, clocks, subcycles, ke, coord, contacts = [], [], [], [], [], [], []
     for s in steps:
         m = re.search(r"^ExecutionTime = (\S+) s\s+ClockTime = (\S+) s", s, re.M)
         if not m:
@@ -174,7 +174,10 @@ def parse_openfoam_log(path):
         ke.append(float(k.group(1)) if k else float("nan"))
         c = re.search(r"Coordination number\s+=\s+(\S+)", s)
         coord.append(float(c.group(1)) if c else float("nan"))
+        pc = re.search(r"Contacts: particle-particle\s+=\s+(\d+), particle-wall\s+=\s+(\d+)", s)
+        contacts.append((int(pc.group(1)), int(pc.group(2))) if pc else None)
     return dict(times=times, exec=execs, clock=clocks, subcycles=subcycles, ke=ke, coord=coord,
+                contacts=[c for c in contacts if c],
                 warnings=len(re.findall(r"FOAM Warning", text)),
                 bufferWarnings=len(re.findall(r"beyond half the buffer layers|of the two buffer layers", text)))
 
@@ -192,7 +195,9 @@ def openfoam_timing(logpath):
     return dict(steps=steps, seconds=seconds, clockSeconds=clock, stepsRun=m,
                 maxSubCycles=max(p["subcycles"]), stepsSubCycled=sum(1 for s in p["subcycles"] if s > 1),
                 keFinal=p["ke"][-1], coordFinal=p["coord"][-1], warnings=p["warnings"],
-                bufferWarnings=p["bufferWarnings"])
+                bufferWarnings=p["bufferWarnings"],
+                pairContacts=p["contacts"][-1][0] if p["contacts"] else None,
+                wallContactsLog=p["contacts"][-1][1] if p["contacts"] else None)
 
 
 def parse_liggghts_log(path):
@@ -502,7 +507,25 @@ def tables(res):
                        f"{c['contactsPerParticle']:.2f} | {c['wallContacts']} |")
     if ell:
         out.append(f"| cfEllipsoids (own bed, {res['ellipsoids']['n']} ellipsoids) | {ell['n']} | "
-                   f"{ell['zmean']*1e3:.4f} | {ell['keFinal']:.3e} | {ell['coordFinal']:.2f} | - |")
+                   f"{ell['zmean']*1e3:.4f} | {ell['keFinal']:.3e} | {ell['coordFinal']:.2f} | "
+                   f"{ell.get('wallContactsLog', '-')} |")
+    cf = codes.get("cfSpheres")
+    if ell and cf and ell.get("pairContacts") is not None:
+        out.append("")
+        out.append("Ellipsoids against spheres (chargedFoam; contacts = particle pairs in contact + wall "
+                   "contacts at the end of the window):")
+        out.append("")
+        out.append("| bed | N | contacts | us per particle-step | us per contact-step | ellipsoids / spheres "
+                   "per particle-step | per contact-step |")
+        out.append("|---|--:|--:|--:|--:|--:|--:|")
+        nc_s = cf["contactsPerParticle"]*cf["n"]/2 + cf["wallContacts"]
+        nc_e = ell["pairContacts"] + ell["wallContactsLog"]
+        us_s, us_e = 1e6/cf["rate"], 1e6/ell["rate"]
+        uc_s = us_s*sp["n"]/nc_s
+        uc_e = us_e*res["ellipsoids"]["n"]/nc_e
+        out.append(f"| cfSpheres | {sp['n']} | {nc_s:.0f} | {us_s:.3g} | {uc_s:.3g} | 1 | 1 |")
+        out.append(f"| cfEllipsoids | {res['ellipsoids']['n']} | {nc_e} | {us_e:.3g} | {uc_e:.3g} | "
+                   f"**{us_e/us_s:.1f}** | **{uc_e/uc_s:.1f}** |")
     return "\n".join(out)
 
 

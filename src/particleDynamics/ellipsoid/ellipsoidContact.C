@@ -263,7 +263,8 @@ depthFunction::state newtonOnSphere
     const vector& m0,
     const scalar L,
     label& iterations,
-    bool& converged
+    bool& converged,
+    const bool stopWhenSeparated = false
 )
 {
     // Tolerances: the tangential residual x1 - x2 is a difference of
@@ -280,6 +281,11 @@ depthFunction::state newtonOnSphere
 
     for (label iter = 0; iter < maxIter; ++iter)
     {
+        // g < 0: n is a separating direction, the minimum is not needed
+        if (stopWhenSeparated && s.g < 0)
+        {
+            break;
+        }
         iterations = iter + 1;
 
         const vector grad = f.grad(s);
@@ -381,6 +387,87 @@ depthFunction::state newtonOnSphere
 }
 
 
+// The contact result of the common normal s.m of (e1, e2)
+result commonNormalResult
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const depthFunction::state& s,
+    const label iterations,
+    const bool converged
+)
+{
+    result r;
+    r.contact = true;
+    r.used = method::robust;
+    r.iterations = iterations;
+    r.converged = converged;
+    r.n = s.m;
+    r.x1 = e1.centre() + s.w1/s.h1;
+    r.x2 = e2.centre() - s.w2/s.h2;
+
+    // g = n.(x1 - x2) by 1-homogeneity, without the cancellation of
+    // differencing two possibly large coordinates
+    r.overlap = max(s.g, scalar(0));
+    r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
+    if (r.converged)
+    {
+        r.gradR = ellipsoidContact::reducedRadiusGradient(e1, e2, r);
+    }
+    return r;
+}
+
+
+// What one Newton run on g from the centre line proves (see "Certified
+// single start" in ellipsoidContact.H)
+enum class certificate { separated, contact, undecided };
+
+certificate certifiedSingleStart
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    vector& nTrack,
+    result& r
+)
+{
+    const depthFunction f(e1, e2);
+    const scalar dist = mag(f.d());
+    if (!(dist > 0))
+    {
+        return certificate::undecided;
+    }
+    const scalar L = e1.boundingRadius() + e2.boundingRadius() + dist;
+
+    label iters = 0;
+    bool conv = false;
+    const depthFunction::state s =
+        newtonOnSphere
+        (
+            f, magSqr(nTrack) > 0 ? nTrack : f.d()/dist, L, iters, conv, true
+        );
+
+    if (s.g < 0)
+    {
+        nTrack = s.m;
+        return certificate::separated;
+    }
+
+    // A stationary depth below the radius of a ball that rolls inside the
+    // Minkowski difference (Blaschke): no other direction is shallower.
+    // The factor 0.9 covers the residual of the stationarity.
+    const scalar rollingRadius =
+        e1.minRadiusOfCurvature() + e2.minRadiusOfCurvature();
+    if (conv && s.g > 0 && s.g < 0.9*rollingRadius)
+    {
+        r = commonNormalResult(e1, e2, s, iters, true);
+        nTrack = s.m;
+        return certificate::contact;
+    }
+    nTrack = Zero;
+    return certificate::undecided;
+}
+
+
 // The robust method without the intersection test
 result robustCore
 (
@@ -479,25 +566,7 @@ result robustCore
         }
     }
 
-    result r;
-    r.contact = true;
-    r.used = method::robust;
-    r.iterations = bestIters;
-    r.converged = bestConverged;
-    r.n = bestState.m;
-    r.x1 = e1.centre() + bestState.w1/bestState.h1;
-    r.x2 = e2.centre() - bestState.w2/bestState.h2;
-
-    // g = n.(x1 - x2) by 1-homogeneity, without the cancellation of
-    // differencing two possibly large coordinates
-    r.overlap = max(bestState.g, scalar(0));
-    r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
-    if (r.converged)
-    {
-        r.gradR = ellipsoidContact::reducedRadiusGradient(e1, e2, r);
-    }
-
-    return r;
+    return commonNormalResult(e1, e2, bestState, bestIters, bestConverged);
 }
 
 
@@ -904,21 +973,8 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
         }
         case method::automatic:
         {
-            if (e1.isSphere() && e2.isSphere())
-            {
-                return sphereSphere(e1, e2);
-            }
-            if (!intersect(e1, e2))
-            {
-                return noContact(e1, e2);
-            }
-            const result r = robustCore(e1, e2, Zero);
-            if (r.converged)
-            {
-                return r;
-            }
-            const result p = polynomialCore(e1, e2);
-            return p.converged ? p : r;
+            vector nTrack(Zero);
+            return contact(e1, e2, nTrack);
         }
         default:
         {
@@ -930,6 +986,47 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
         }
     }
     return result();
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    vector& nTrack
+)
+{
+    if (e1.isSphere() && e2.isSphere())
+    {
+        return sphereSphere(e1, e2);
+    }
+    if
+    (
+        magSqr(e2.centre() - e1.centre())
+      > sqr(e1.boundingRadius() + e2.boundingRadius())
+    )
+    {
+        return noContact(e1, e2);
+    }
+    result c;
+    switch (certifiedSingleStart(e1, e2, nTrack, c))
+    {
+        case certificate::separated: return noContact(e1, e2);
+        case certificate::contact: return c;
+        case certificate::undecided: break;
+    }
+    if (!intersect(e1, e2))
+    {
+        return noContact(e1, e2);
+    }
+    const result r = robustCore(e1, e2, Zero);
+    if (r.converged)
+    {
+        nTrack = r.n;
+        return r;
+    }
+    const result p = polynomialCore(e1, e2);
+    return p.converged ? p : r;
 }
 
 

@@ -695,19 +695,24 @@ TEST(ellipsoidContact, RobustnessRandomPairs)
             check(r, truth, c);
             return r;
         };
-        timed(ellipsoidContact::method::automatic, cAuto);
+        const ellipsoidContact::result ra =
+            timed(ellipsoidContact::method::automatic, cAuto);
         const ellipsoidContact::result rr =
             timed(ellipsoidContact::method::robust, cRobust);
         timed(ellipsoidContact::method::polynomial, cPoly);
 
         // Known depth: the penetration depth cannot exceed delta (g(n) =
-        // delta) and equals it for small delta
-        if (kind == 0 && rr.contact)
+        // delta) and equals it for small delta; automatic (mostly the
+        // certified single start) and robust (the full search)
+        for (const ellipsoidContact::result* r : {&ra, &rr})
         {
-            ++depthChecked;
-            const double tol = 1e-6*delta + 1e-13*(b1.maxAxis() + cmptMax(ax2));
-            if (rr.overlap > delta + tol) ++depthBad;
-            if (delta <= 1e-2*cMin && std::abs(rr.overlap - delta) > tol) ++depthBad;
+            if (kind == 0 && r->contact)
+            {
+                ++depthChecked;
+                const double tol = 1e-6*delta + 1e-13*(b1.maxAxis() + cmptMax(ax2));
+                if (r->overlap > delta + tol) ++depthBad;
+                if (delta <= 1e-2*cMin && std::abs(r->overlap - delta) > tol) ++depthBad;
+            }
         }
     }
 
@@ -742,7 +747,7 @@ TEST(ellipsoidContact, RobustnessRandomPairs)
     report("robust", cRobust);
     report("polynomial", cPoly);
     std::cout
-        << "    robust depth == delta checks failed: " << depthBad
+        << "    automatic and robust depth == delta checks failed: " << depthBad
         << " of " << depthChecked << std::endl;
 
     EXPECT_EQ(intersectMissed, 0);
@@ -797,6 +802,74 @@ TEST(ellipsoidContact, RobustMethodFindsTheGlobalPenetrationDepth)
         << " of the size), below in " << nBelow << std::endl;
     EXPECT_EQ(nWorse, 0);
     EXPECT_EQ(nBelow, 0);
+}
+
+
+TEST(ellipsoidContact, TrackedStartAgreesWithTheFullSearch)
+{
+    // A pair moved through contact in small steps (approach, rotation,
+    // separation), the narrow phase started each step from the tracked
+    // direction of the step before: the same contact as the full search
+    // (robust: intersection test and 128 sampled starts) to round-off,
+    // and when separated the tracked direction is a separating plane's
+    // normal (the support functions do not reach each other along it)
+    rng_t g(77);
+    int nContact = 0, nSeparated = 0, nBad = 0;
+    for (int pair = 0; pair < 200; ++pair)
+    {
+        const vector ax1 = randomAxes(g, 1, 5, false);
+        const vector ax2 = randomAxes(g, uniform(g, 0.5, 2), 5, false);
+        const tensor R1 = randomRotation(g);
+        const vector u = randomUnit(g);
+        const vector w = 0.02*randomUnit(g);
+        const double cMin = std::min(cmptMin(ax1), cmptMin(ax2));
+        const body b0(ax1, point::zero, R1);
+        const body touching = makeContact(b0, ax2, randomRotation(g), u, 0, false).b2;
+        vector nTrack(Zero);
+        for (int step = -20; step <= 20; ++step)
+        {
+            // Depth profile: 1e-3 cMin at the middle, apart at the ends
+            const double depth = cMin*(1e-3 - 1e-4*std::abs(step));
+            const vector rot = step*w;
+            const tensor Rw =
+                step == 0 ? tensor::I : quaternion(rot/mag(rot), mag(rot)).R();
+            const ellipsoid e1(ax1, point::zero, R1);
+            const ellipsoid e2(ax2, touching.c - depth*u, Rw & touching.R);
+            const ellipsoidContact::result rt = ellipsoidContact::contact(e1, e2, nTrack);
+            const ellipsoidContact::result rr =
+                ellipsoidContact::contact(e1, e2, ellipsoidContact::method::robust);
+            const double L = cmptMax(ax1) + cmptMax(ax2);
+            if (rt.contact != rr.contact) { ++nBad; continue; }
+            if (rt.contact)
+            {
+                ++nContact;
+                if
+                (
+                    std::abs(rt.overlap - rr.overlap) > 1e-12*L
+                 || mag(rt.n - rr.n) > 1e-9 || mag(nTrack - rt.n) > 0
+                 || mag(rt.x1 - rr.x1) > 1e-9*L
+                )
+                {
+                    ++nBad;
+                }
+            }
+            else if (magSqr(nTrack) > 0)
+            {
+                ++nSeparated;
+                const vector d = e2.centre() - e1.centre();
+                if (!(e1.supportDistance(nTrack) + e2.supportDistance(nTrack) < (nTrack & d)))
+                {
+                    ++nBad;
+                }
+            }
+        }
+    }
+    std::cout
+        << "  Tracked start: " << nContact << " contacts, " << nSeparated
+        << " separations with a tracked direction, disagreements " << nBad << std::endl;
+    EXPECT_EQ(nBad, 0);
+    EXPECT_GT(nContact, 1000);
+    EXPECT_GT(nSeparated, 1000);
 }
 
 
@@ -944,6 +1017,9 @@ TEST(ellipsoidContact, CurvatureEq37IsTheMeanCurvature)
         const double K = e.curvature(x);
         EXPECT_NEAR(K, 0.5*(k1 + k2), 1e-10*k2) << "Eq. (37) is not the mean curvature";
         EXPECT_NEAR(e.gaussianCurvature(x), k1*k2, 1e-10*k2*k2);
+        // No radius of curvature below c^2/a (the certified single start
+        // of the contact relies on it)
+        EXPECT_LE(k2*e.minRadiusOfCurvature(), 1 + 1e-10);
         maxVsGaussRoot = std::max(maxVsGaussRoot, std::abs(K/std::sqrt(k1*k2) - 1));
     }
     // ... and not the (root of the) Gaussian curvature
@@ -958,6 +1034,8 @@ TEST(ellipsoidContact, CurvatureEq37IsTheMeanCurvature)
     const double a = 3, c = 0.7;
     const ellipsoid prolate(vector(a, c, c), point(1, 2, 3));
     EXPECT_NEAR(1/prolate.curvature(point(1 + a, 2, 3)), c*c/a, 1e-14);      // a-tip: R = b^2/a twice
+    EXPECT_NEAR(prolate.minRadiusOfCurvature(), c*c/a, 1e-15);
+    EXPECT_NEAR(ellipsoid(vector(0.5, 2, 1), point::zero).minRadiusOfCurvature(), 0.125, 1e-15);
     EXPECT_NEAR(prolate.curvature(point(1, 2 + c, 3)), 0.5*(c/(a*a) + 1/c), 1e-14); // equator
     const ellipsoid oblate(vector(a, a, c), point::zero);
     EXPECT_NEAR(1/oblate.curvature(point(0, 0, c)), a*a/c, 1e-12);          // pole

@@ -500,7 +500,8 @@ Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
         cmptMax(p.semiAxes()) + dBl,
         dBl,
         p.isSphere(),
-        labelPair(p.origProc(), p.origId())
+        labelPair(p.origProc(), p.origId()),
+        -1
     };
 }
 
@@ -525,6 +526,7 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
         parcels_.clear();
         x_.clear();
         bodies_.clear();
+        shells_.clear();
         for (parcelType& p : this->owner())
         {
             gatherBody(p);
@@ -571,6 +573,7 @@ void Foam::EllipsoidCollision<CloudType>::beginGather()
     parcels_.clear();
     x_.clear();
     bodies_.clear();
+    shells_.clear();
     gathering_ = true;
 }
 
@@ -639,6 +642,8 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     oldXi.transfer(listXi_);
     List<char> oldTouching;
     oldTouching.transfer(listTouching_);
+    List<vector> oldN;
+    oldN.transfer(listN_);
 
     listX_ = x_;
     listIds_.setSize(n);
@@ -691,7 +696,7 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
         );
     }
 
-    carryHistories(oldStart, oldPartners, oldXi, oldTouching, oldIndex);
+    carryHistories(oldStart, oldPartners, oldXi, oldTouching, oldN, oldIndex);
 
     // Wall faces in reach: those of the interaction list of the parcel's
     // cell whose bounding box comes within r + skin. Complete while the
@@ -784,6 +789,7 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
     const labelList& oldPartners,
     const List<vector>& oldXi,
     const List<char>& oldTouching,
+    const List<vector>& oldN,
     const labelList& oldIndex
 )
 {
@@ -811,6 +817,7 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
 
     listXi_.setSize(listPartners_.size());
     listTouching_.setSize(listPartners_.size());
+    listN_.setSize(listPartners_.size());
     forAll(parcels_, i)
     {
         const label oi = oldIndex[i];
@@ -819,6 +826,7 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
             const label j = listPartners_[k];
             const label oj = oldIndex[j];
             vector xi(Zero);
+            vector n(Zero);
             bool touching = false;
             bool found = false;
 
@@ -834,6 +842,7 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
                         found = true;
                         touching = oldTouching[m];
                         xi = a == oi ? oldXi[m] : -oldXi[m];
+                        n = a == oi ? oldN[m] : -oldN[m];
                         break;
                     }
                 }
@@ -854,6 +863,7 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
             }
             listXi_[k] = touching ? xi : vector(Zero);
             listTouching_[k] = touching;
+            listN_[k] = n;
         }
     }
 }
@@ -894,7 +904,8 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
     const point& xA,
     const contactBody& B,
     const point& xB,
-    const bool referred
+    const bool referred,
+    vector& nTrack
 ) const
 {
     // A referred pair is evaluated on both processors: in one canonical
@@ -912,11 +923,39 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
     const point& x1 = swapped ? xB : xA;
     const point& x2 = swapped ? xA : xB;
 
-    // Two spheres: the analytic fast path, without ellipsoid objects
-    ellipsoidContact::result c =
-        b1.sphere && b2.sphere
-      ? ellipsoidContact::sphereSphere(x1, b1.radius, x2, b2.radius)
-      : ellipsoidContact::contact(shell(*b1.p, x1), shell(*b2.p, x2), method_);
+    // Two spheres: the analytic fast path, without ellipsoid objects;
+    // the shells of gathered parcels are made once per collide, those of
+    // referred parcels here
+    ellipsoidContact::result c;
+    if (b1.sphere && b2.sphere)
+    {
+        c = ellipsoidContact::sphereSphere(x1, b1.radius, x2, b2.radius);
+    }
+    else if
+    (
+        b1.shell >= 0 && b2.shell >= 0
+     && method_ == ellipsoidContact::method::automatic
+    )
+    {
+        c = ellipsoidContact::contact
+        (
+            shells_[b1.shell], shells_[b2.shell], nTrack
+        );
+    }
+    else if (b1.shell >= 0 && b2.shell >= 0)
+    {
+        c = ellipsoidContact::contact
+        (
+            shells_[b1.shell], shells_[b2.shell], method_
+        );
+    }
+    else
+    {
+        c = ellipsoidContact::contact
+        (
+            shell(*b1.p, x1), shell(*b2.p, x2), method_
+        );
+    }
     if (swapped)
     {
         std::swap(c.x1, c.x2);
@@ -1019,14 +1058,18 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             const contactBody& B = bodies_[j];
             const point& xB = x_[j];
 
-            // Bounding spheres of the collision shells, then the contact
+            // Bounding spheres of the collision shells, then the contact.
+            // Apart, the pair's tracked direction is forgotten: it then
+            // depends only on the pair's own history since it came within
+            // reach, not on when the list was built
             if (magSqr(xA - xB) > sqr(A.radius + B.radius))
             {
                 listTouching_[k] = false;
+                listN_[k] = Zero;
                 continue;
             }
             const ellipsoidContact::result c =
-                pairGeometry(A, xA, B, xB, false);
+                pairGeometry(A, xA, B, xB, false, listN_[k]);
             if (!c.contact || c.overlap <= 0)
             {
                 listTouching_[k] = false;
@@ -1078,8 +1121,9 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
                         continue;
                     }
                     const contactBody A = body(pA);
+                    vector nTrack(Zero);
                     const ellipsoidContact::result c =
-                        pairGeometry(A, xA, R, xR, true);
+                        pairGeometry(A, xA, R, xR, true, nTrack);
                     if (!c.contact || c.overlap <= 0)
                     {
                         continue;
@@ -1123,7 +1167,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
     [&]
     (
         const label i,
-        std::unique_ptr<const ellipsoid>& ePtr,
         const face& f,
         const pointField& pts,
         const point& fc,
@@ -1152,15 +1195,13 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             return;
         }
 
-        // The collision shell, made for the first face in reach
-        if (!b.sphere && !ePtr)
-        {
-            ePtr.reset(new ellipsoid(shell(*b.p, xp)));
-        }
         const ellipsoidContact::result c =
             b.sphere
           ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
-          : ellipsoidContact::ellipsoidPlane(*ePtr, fc, -nOutOfDomain);
+          : ellipsoidContact::ellipsoidPlane
+            (
+                shells_[b.shell], fc, -nOutOfDomain
+            );
         if (!c.contact || c.overlap <= 0)
         {
             return;
@@ -1234,7 +1275,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
     for (label m = 0; m < nLoop; ++m)
     {
         const label i = allParcels ? m : wallParcels_[m];
-        std::unique_ptr<const ellipsoid> ePtr;
         contactPoints.clear();
 
         // Mesh face centres and areas are cached by the mesh
@@ -1246,7 +1286,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             wallFace
             (
                 i,
-                ePtr,
                 mesh.faces()[facei],
                 mesh.points(),
                 mesh.faceCentres()[facei],
@@ -1268,7 +1307,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 wallFace
                 (
                     i,
-                    ePtr,
                     rwf,
                     pts,
                     rwf.centre(pts),
@@ -1317,6 +1355,13 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
     // cyclics (parcels change processor, referred pairs use the records)
     // or when a submodel asks for them, otherwise at write time (restart)
     const bool writeTime = this->owner().mesh().time().writeTime();
+    if (writeTime)
+    {
+        // The narrow phase's tracked directions are not written: the run
+        // forgets them as a restart from this time does, so both continue
+        // identically (the next narrow phase starts from the centre line)
+        listN_ = Zero;
+    }
     if (referring() || keepRecords_ || writeTime)
     {
         writePairRecords();
@@ -1458,6 +1503,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     subCyclesTimeIndex_(-1),
     listXi_(),
     listTouching_(),
+    listN_(),
     keepRecords_(false),
     wallStart_(),
     wallFaces_(),
