@@ -31,7 +31,7 @@ def write_doc(path, res, table, quick=False, regenerated=False):
     add(cmd)
     add("```")
     add("")
-    add(f"(`Allrun` takes about 8 min on this machine. `Allrun -quick`, with N = {ph_quick_n()} spheres "
+    add(f"(`Allrun` takes about 7 min on this machine. `Allrun -quick`, with N = {ph_quick_n()} spheres "
         f"and 500 ellipsoids, takes about 3 min; it checks the machinery and writes no doc.)")
     add(f"The results are from `{cmd}` started on {m['date']} (mode `{res['mode']}`, "
         f"total {res['totalSeconds']/60:.1f} min)"
@@ -150,7 +150,7 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         w = el.get("window", {})
         add("- **Ellipsoids** can only be run by chargedFoam, so their bed has to be poured by")
         add(f"  chargedFoam itself. The pour cost {p['processWall']:.0f} s for {el['n']} ellipsoids "
-            f"({p['subSteps']} sub-steps, {perStep:.3f} ms per ellipsoid-step).")
+            f"({p['subSteps']} sub-steps, {1e3*perStep:.3g} us per ellipsoid-step).")
         add(f"  The bed holds {el['n']} ellipsoids in a {el['base']*1e3:g} x {el['base']*1e3:g} mm box "
             f"(mean height of the centres {w.get('zmean', float('nan'))*1e3:.1f} mm).")
         add("  The pour uses the tutorial's recipe, a large deltaT with adaptive sub-cycles, and is not")

@@ -121,12 +121,80 @@ void curvatureAlong
 
 
 // Radii-of-curvature tensor D = grad grad h of e along the unit n,
-// applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n)
-vector radiiOfCurvature(const ellipsoid& e, const vector& n, const vector& t)
+// applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n);
+// S^-1 n and h once per body and normal
+class radiiOfCurvature
 {
-    const vector Mn = e.Sinv() & n;
-    const scalar h = Foam::sqrt(n & Mn);
-    return (e.Sinv() & t)/h - Mn*((Mn & t)/(h*h*h));
+    const symmTensor& Minv_;
+    const vector Mn_;
+    const scalar h_;
+
+public:
+
+    radiiOfCurvature(const ellipsoid& e, const vector& n)
+    :
+        Minv_(e.Sinv()),
+        Mn_(Minv_ & n),
+        h_(Foam::sqrt(n & Mn_))
+    {}
+
+    vector operator()(const vector& t) const
+    {
+        return (Minv_ & t)/h_ - Mn_*((Mn_ & t)/(h_*h_*h_));
+    }
+};
+
+
+// gradR of a common-normal contact r (ellipsoidContact::
+// reducedRadiusGradient, see ellipsoidContact.H) and the curvature sum
+// K1 + K2 along its normal
+radiusGradient radiusGradientAndCurvature
+(
+    const ellipsoid& e1,
+    const ellipsoid& e2,
+    const result& r,
+    scalar& Ksum
+)
+{
+    const vector& n = r.n;
+    scalar K1, K2;
+    vector gradK1, gradK2;
+    curvatureAlong(e1, n, K1, gradK1);
+    curvatureAlong(e2, n, K2, gradK2);
+    Ksum = K1 + K2;
+    const vector G = gradK1 + gradK2;
+
+    // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P
+    vector t1, t2;
+    tangents(n, t1, t2);
+    const radiiOfCurvature D1(e1, n), D2(e2, n);
+    const vector Dt1 = D1(t1) + D2(t1);
+    const vector Dt2 = D1(t2) + D2(t2);
+    const scalar H11 = (t1 & Dt1) - r.overlap;
+    const scalar H22 = (t2 & Dt2) - r.overlap;
+    const scalar H12 = 0.5*((t1 & Dt2) + (t2 & Dt1));
+    const scalar det = H11*H22 - H12*H12;
+
+    radiusGradient d;
+    if (!(det > 0) || !(H11 > 0))
+    {
+        // Not a strict minimum of the depth: the normal is not a smooth
+        // function of the configuration here
+        return d;
+    }
+    const scalar G1 = t1 & G, G2 = t2 & G;
+    const vector w = ((H22*G1 - H12*G2)/det)*t1 + ((H11*G2 - H12*G1)/det)*t2;
+
+    // R = 1/(K1 + K2) at the common-normal points (the contact's
+    // reducedRadius, here from the same K(n) as its gradient)
+    const scalar R2 = 1/sqr(K1 + K2);
+    const vector r1 = r.x1 - e1.centre();
+    const vector r2 = r.x2 - e2.centre();
+    d.centre1 = R2*w;
+    d.centre2 = -R2*w;
+    d.rotation1 = -R2*((n ^ D1(w)) - (r1 ^ w) - (n ^ gradK1));
+    d.rotation2 = -R2*((n ^ D2(w)) + (r2 ^ w) - (n ^ gradK2));
+    return d;
 }
 
 
@@ -409,10 +477,16 @@ result commonNormalResult
     // g = n.(x1 - x2) by 1-homogeneity, without the cancellation of
     // differencing two possibly large coordinates
     r.overlap = max(s.g, scalar(0));
-    r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
     if (r.converged)
     {
-        r.gradR = ellipsoidContact::reducedRadiusGradient(e1, e2, r);
+        // R = 1/(K1 + K2) from the same K(n) as its gradient
+        scalar Ksum;
+        r.gradR = radiusGradientAndCurvature(e1, e2, r, Ksum);
+        r.reducedRadius = 1/Ksum;
+    }
+    else
+    {
+        r.reducedRadius = reducedRadius(e1, r.x1, e2, r.x2);
     }
     return r;
 }
@@ -1038,47 +1112,8 @@ Foam::ellipsoidContact::reducedRadiusGradient
     const result& r
 )
 {
-    const vector& n = r.n;
-    scalar K1, K2;
-    vector gradK1, gradK2;
-    curvatureAlong(e1, n, K1, gradK1);
-    curvatureAlong(e2, n, K2, gradK2);
-    const vector G = gradK1 + gradK2;
-
-    // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P
-    vector t1, t2;
-    tangents(n, t1, t2);
-    const vector Dt1 =
-        radiiOfCurvature(e1, n, t1) + radiiOfCurvature(e2, n, t1);
-    const vector Dt2 =
-        radiiOfCurvature(e1, n, t2) + radiiOfCurvature(e2, n, t2);
-    const scalar H11 = (t1 & Dt1) - r.overlap;
-    const scalar H22 = (t2 & Dt2) - r.overlap;
-    const scalar H12 = 0.5*((t1 & Dt2) + (t2 & Dt1));
-    const scalar det = H11*H22 - H12*H12;
-
-    radiusGradient d;
-    if (!(det > 0) || !(H11 > 0))
-    {
-        // Not a strict minimum of the depth: the normal is not a smooth
-        // function of the configuration here
-        return d;
-    }
-    const scalar G1 = t1 & G, G2 = t2 & G;
-    const vector w = ((H22*G1 - H12*G2)/det)*t1 + ((H11*G2 - H12*G1)/det)*t2;
-
-    // R = 1/(K1 + K2) at the common-normal points (the contact's
-    // reducedRadius, here from the same K(n) as its gradient)
-    const scalar R2 = 1/sqr(K1 + K2);
-    const vector r1 = r.x1 - e1.centre();
-    const vector r2 = r.x2 - e2.centre();
-    d.centre1 = R2*w;
-    d.centre2 = -R2*w;
-    d.rotation1 =
-        -R2*((n ^ radiiOfCurvature(e1, n, w)) - (r1 ^ w) - (n ^ gradK1));
-    d.rotation2 =
-        -R2*((n ^ radiiOfCurvature(e2, n, w)) + (r2 ^ w) - (n ^ gradK2));
-    return d;
+    scalar Ksum;
+    return radiusGradientAndCurvature(e1, e2, r, Ksum);
 }
 
 

@@ -233,9 +233,15 @@ Foam::ellipsoid Foam::EllipsoidCollision<CloudType>::shell
     const point& x
 ) const
 {
-    const ellipsoid body(p.semiAxes(), x, p.orientation());
+    // The inflated semi-axes of Eq. (41) directly (ellipsoid::inflated
+    // would build the body first)
     const scalar dBl = bufferLayer(p);
-    return dBl > 0 ? body.inflated(dBl) : body;
+    return ellipsoid
+    (
+        dBl > 0 ? p.semiAxes() + vector::uniform(dBl) : p.semiAxes(),
+        x,
+        p.orientation()
+    );
 }
 
 
