@@ -475,15 +475,19 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::normalMobility
     const point& xb,
     const point& xc,
     const vector& n
-)
+) const
 {
     // 1/m + (r x n).I^-1 (r x n); r x n = 0 for a sphere (r along n)
     if (b.sphere)
     {
         return 1/b.mass;
     }
-    const parcelType& p = *b.p;
     const vector rn = (xc - xb) ^ n;
+    if (b.shell >= 0)
+    {
+        return 1/b.mass + (rn & (inverseInertia_[b.shell] & rn));
+    }
+    const parcelType& p = *b.p;
     const vector I = p.principalMoments();
     const vector rnBody = rigidBodyRotation::toBody(p.orientation(), rn);
     return
@@ -533,6 +537,7 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
         x_.clear();
         bodies_.clear();
         shells_.clear();
+        inverseInertia_.clear();
         for (parcelType& p : this->owner())
         {
             gatherBody(p);
@@ -580,6 +585,7 @@ void Foam::EllipsoidCollision<CloudType>::beginGather()
     x_.clear();
     bodies_.clear();
     shells_.clear();
+    inverseInertia_.clear();
     gathering_ = true;
 }
 
