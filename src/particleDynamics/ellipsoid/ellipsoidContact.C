@@ -492,8 +492,8 @@ result commonNormalResult
 }
 
 
-// What one Newton run on g from the centre line proves (see "Certified
-// single start" in ellipsoidContact.H)
+// What one Newton run on g from nTrack (zero: the centre line) proves
+// (see "Certified single start" in ellipsoidContact.H)
 enum class certificate { separated, contact, undecided };
 
 certificate certifiedSingleStart
