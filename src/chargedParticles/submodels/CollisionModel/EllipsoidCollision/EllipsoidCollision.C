@@ -235,12 +235,9 @@ Foam::ellipsoid Foam::EllipsoidCollision<CloudType>::shell
 {
     // The inflated semi-axes of Eq. (41) directly (ellipsoid::inflated
     // would build the body first)
-    const scalar dBl = bufferLayer(p);
     return ellipsoid
     (
-        dBl > 0 ? p.semiAxes() + vector::uniform(dBl) : p.semiAxes(),
-        x,
-        p.orientation()
+        p.semiAxes() + vector::uniform(bufferLayer(p)), x, p.orientation()
     );
 }
 
@@ -943,23 +940,14 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
     {
         c = ellipsoidContact::sphereSphere(x1, b1.radius, x2, b2.radius);
     }
-    else if
-    (
-        b1.shell >= 0 && b2.shell >= 0
-     && method_ == ellipsoidContact::method::automatic
-    )
-    {
-        c = ellipsoidContact::contact
-        (
-            shells_[b1.shell], shells_[b2.shell], nTrack
-        );
-    }
     else if (b1.shell >= 0 && b2.shell >= 0)
     {
-        c = ellipsoidContact::contact
-        (
-            shells_[b1.shell], shells_[b2.shell], method_
-        );
+        const ellipsoid& e1 = shells_[b1.shell];
+        const ellipsoid& e2 = shells_[b2.shell];
+        c =
+            method_ == ellipsoidContact::method::automatic
+          ? ellipsoidContact::contact(e1, e2, nTrack)
+          : ellipsoidContact::contact(e1, e2, method_);
     }
     else
     {
