@@ -220,7 +220,7 @@ badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
     'Entry selfFieldRadius = 1 in .* must be 0 .* or in \[2, 10\] shape radii'
 badCase unknownSelfFieldSampling 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldSampling cells; }' \
-    'Entry selfFieldSampling = cells in .* must be one of 2\(points charges\)'
+    'Entry selfFieldSampling = cells in .* must be one of 3\(points charges auto\)'
 badCase negativeNonOrthTolerance 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nonOrthogonalTolerance -1; }' \
     'Entry nonOrthogonalTolerance = -1 in .* must be in \[0, 1\)'

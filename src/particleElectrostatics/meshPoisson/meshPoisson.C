@@ -41,6 +41,7 @@ Foam::meshPoisson::selfFieldSamplingTypeNames
 ({
     { selfFieldSamplingType::points, "points" },
     { selfFieldSamplingType::charges, "charges" },
+    { selfFieldSamplingType::automatic, "auto" },
 });
 
 
@@ -174,7 +175,7 @@ Foam::meshPoisson::readSelfFieldSampling() const
         coeffs_.lookupOrDefault<word>
         (
             key,
-            selfFieldSamplingTypeNames[selfFieldSamplingType::points]
+            selfFieldSamplingTypeNames[selfFieldSamplingType::automatic]
         )
     );
     if (!selfFieldSamplingTypeNames.found(w))
@@ -1201,12 +1202,38 @@ void Foam::meshPoisson::removeSelfFields
         {
             continue;
         }
-        shapeField_[i] -=
-            (qs_[i]*wLocal[i])
-           *selfField_->field
+        const scalar qw = qs_[i]*wLocal[i];
+        vector s;
+        if (selfFieldSampling_ == selfFieldSamplingType::charges)
+        {
+            s = selfField_->fieldAtCharge
             (
                 xs_[i], celli, neighbourhood, shape, wallPlane, clear
             );
+        }
+        else
+        {
+            s = selfField_->field
+            (
+                xs_[i], celli, neighbourhood, shape, wallPlane, clear
+            );
+            // shapeField_[i]/shapeSum_[i]: the mesh field at the charge
+            // (the whole shape is here), its self field included
+            const vector self(qw*s/shapeSum_[i]);
+            if
+            (
+                selfFieldSampling_ == selfFieldSamplingType::automatic
+             && mag(self)
+              > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self)
+            )
+            {
+                s = selfField_->fieldAtCharge
+                (
+                    xs_[i], celli, neighbourhood, shape, wallPlane, clear
+                );
+            }
+        }
+        shapeField_[i] -= qw*s;
     }
 }
 
@@ -1415,8 +1442,7 @@ void Foam::meshPoisson::solve()
                 radius_,
                 selfFieldRadius_*radius_,
                 nNonOrthCorr_,
-                nonOrthTolerance_,
-                selfFieldSampling_ == selfFieldSamplingType::charges
+                nonOrthTolerance_
             )
         );
     }

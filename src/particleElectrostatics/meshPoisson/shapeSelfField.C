@@ -24,8 +24,7 @@ Foam::shapeSelfField::shapeSelfField
     const scalar shapeRadius,
     const scalar patchRadius,
     const label nNonOrthCorr,
-    const scalar tolerance,
-    const bool perCharge
+    const scalar tolerance
 )
 :
     mesh_(mesh),
@@ -34,7 +33,6 @@ Foam::shapeSelfField::shapeSelfField
     patchRadius_(patchRadius),
     nNonOrthCorr_(nNonOrthCorr),
     tolerance_(tolerance),
-    perCharge_(perCharge),
     internalCoeff_(upper),
     boundaryCoeff_(mesh.boundary().size()),
     boundaryPoint_(mesh.boundary().size()),
