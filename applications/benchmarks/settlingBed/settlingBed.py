@@ -29,7 +29,6 @@ import math
 import os
 import platform
 import re
-import resource
 import shutil
 import subprocess
 import sys
@@ -93,17 +92,17 @@ def loadavg():
 
 def run(cmd, cwd, logfile, env=None):
     """Run cmd in cwd, output to logfile; returns wall and CPU seconds of
-    the process (children rusage)."""
-    r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    the process and its peak resident size [bytes] (its own rusage)."""
     t0 = time.perf_counter()
     with open(os.path.join(cwd, logfile), "w") as out:
-        p = subprocess.run(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, env=env)
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, env=env)
+        _, status, ru = os.wait4(p.pid, 0)
+        p.returncode = os.waitstatus_to_exitcode(status)
     wall = time.perf_counter() - t0
-    r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (r1.ru_utime - r0.ru_utime) + (r1.ru_stime - r0.ru_stime)
+    cpu = ru.ru_utime + ru.ru_stime
     if p.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed in {cwd} (exit {p.returncode}); see {logfile}")
-    return wall, cpu
+    return wall, cpu, 1024*ru.ru_maxrss     # Linux: ru_maxrss in KiB
 
 
 def snapshot_chargedfoam(runs):
@@ -130,17 +129,17 @@ def run_openfoam(case, env):
     app = re.search(r"^application\s+(\S+);", open(os.path.join(case, "system", "controlDict")).read(),
                     re.M).group(1)
     run(["blockMesh"], case, "log.blockMesh", env)
-    wall, cpu = run([app], case, f"log.{app}", env)
-    return dict(app=app, processWall=wall, processCpu=cpu)
+    wall, cpu, rss = run([app], case, f"log.{app}", env)
+    return dict(app=app, processWall=wall, processCpu=cpu, peakRss=rss)
 
 
 def run_liggghts(case, env, cpu_loop=False):
     """Run in.settlingBed. With cpu_loop, also run the same input with 0
     steps (setup and final output only): the difference of the two process
     CPU times is the CPU time of the loop."""
-    wall, cpu = run(["liggghts", "-in", "in.settlingBed", "-log", "log.liggghts", "-screen", "none"],
-                    case, "stdout.liggghts", env)
-    rec = dict(app="liggghts", processWall=wall, processCpu=cpu)
+    wall, cpu, rss = run(["liggghts", "-in", "in.settlingBed", "-log", "log.liggghts", "-screen", "none"],
+                         case, "stdout.liggghts", env)
+    rec = dict(app="liggghts", processWall=wall, processCpu=cpu, peakRss=rss)
     if cpu_loop:
         with open(os.path.join(case, "in.settlingBed")) as f:
             text = f.read()
@@ -148,7 +147,7 @@ def run_liggghts(case, env, cpu_loop=False):
         text = text.replace("final.dump", "setupOnly.dump")
         with open(os.path.join(case, "in.setupOnly"), "w") as f:
             f.write(text)
-        w0, c0 = run(["liggghts", "-in", "in.setupOnly", "-log", "log.setupOnly", "-screen", "none"],
+        w0, c0, _ = run(["liggghts", "-in", "in.setupOnly", "-log", "log.setupOnly", "-screen", "none"],
                      case, "stdout.setupOnly", env)
         rec.update(setupOnlyWall=w0, setupOnlyCpu=c0, loopCpu=cpu - c0)
     return rec
@@ -402,7 +401,7 @@ def ellipsoid_benchmark(cfg, runs, env, results):
     cases.set_window(case, t0, cfg["ellipsoidWindow"], dt, setup.resolution_steps()[1])
     log(f"[cfEllipsoids] {cfg['ellipsoidWindow']} steps of {dt:g} s from t = {t0:g} s, load {loadavg()}")
     la0 = loadavg()
-    wall, cpu = run(["chargedParticleFoam"], case, "log.chargedParticleFoam", env)
+    wall, cpu, _ = run(["chargedParticleFoam"], case, "log.chargedParticleFoam", env)
     t = openfoam_timing(os.path.join(case, "log.chargedParticleFoam"))
     x = read_ellipsoid_state(case)
     rec = dict(t, processWall=wall, processCpu=cpu, n=len(x), zmean=float(x[:, 2].mean()),
@@ -440,6 +439,60 @@ def cell_study(cfg, runs, env, cells, steps):
                                     loadStart=la0, loadEnd=loadavg()))
     json.dump(out, open(os.path.join(runs, "results-cells.json"), "w"), indent=1)
     return out
+
+
+def scale_study(runs, env, sizes, repeats):
+    """Cost and memory against N: for each N a bed of the benchmark's height
+    (the floor's side grows as sqrt(N), so the time step, the contacts per
+    particle and the cells per particle stay), poured by LIGGGHTS, then the
+    timed windows of cfSpheres and LIGGGHTS in turns, as the benchmark's.
+    Memory: the peak resident size of each window's process."""
+    full = CONFIGS["full"]
+    out = dict(sizes=sizes, rows=[])
+    for n in sizes:
+        cfg = dict(full, n=n, base=full["base"]*math.sqrt(n/full["n"]), repeats=repeats)
+        res = {}
+        log(f"[scale] N = {n}, floor {cfg['base']*1e3:.1f} mm")
+        sphere_benchmark(cfg, os.path.join(runs, "scale", f"n{n}"), env, ["cfSpheres", "liggghts"], res)
+        sp = res["spheres"]
+        row = dict(n=n, base=cfg["base"], window=cfg["window"])
+        for code, c in sp["codes"].items():
+            row[code] = dict(rate=c["rate"], rates=c["repeats"], peakRss=c["peakRss"],
+                             contactsPerParticle=c["contactsPerParticle"])
+        # chargedFoam / LIGGGHTS per pair of runs taken in turn
+        row["pairRatios"] = [l/c for c, l in zip(sp["codes"]["cfSpheres"]["runRates"],
+                                                  sp["codes"]["liggghts"]["runRates"])]
+        out["rows"].append(row)
+        json.dump(out, open(os.path.join(runs, "results-scale.json"), "w"), indent=1)
+    return out
+
+
+def scale_table(sc):
+    """Cost per particle-step and memory against N (relative to the N of
+    the benchmark, 10^4, where run)."""
+    rows = sc["rows"]
+    ref = next((r for r in rows if r["n"] == CONFIGS["full"]["n"]), rows[0])
+    us = lambda r, c: 1e6/r[c]["rate"]
+    out = ["| N | floor [mm] | contacts per particle | chargedFoam [us per particle-step] | "
+           f"/ N = {ref['n']} | LIGGGHTS [us per particle-step] | / N = {ref['n']} | "
+           "chargedFoam / LIGGGHTS (median of the pairs) | chargedFoam peak resident [MB] | "
+           "LIGGGHTS peak resident [MB] |",
+           "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"]
+    for r in rows:
+        out.append(f"| {r['n']} | {r['base']*1e3:.1f} | {r['cfSpheres']['contactsPerParticle']:.2f} | "
+                   f"{us(r, 'cfSpheres'):.3g} | {us(r, 'cfSpheres')/us(ref, 'cfSpheres'):.2f} | "
+                   f"{us(r, 'liggghts'):.3g} | {us(r, 'liggghts')/us(ref, 'liggghts'):.2f} | "
+                   f"{np.median(r['pairRatios']):.2f} | {r['cfSpheres']['peakRss']/1e6:.0f} | "
+                   f"{r['liggghts']['peakRss']/1e6:.0f} |")
+    if len(rows) > 1:
+        a, b = rows[0], rows[-1]
+        per = lambda c: (b[c]["peakRss"] - a[c]["peakRss"])/(b["n"] - a["n"])
+        out.append("")
+        out.append(f"Memory per particle, the growth of the peak resident size from N = {a['n']} to "
+                   f"{b['n']} over the particles added (the mesh grows with the floor, as it would in "
+                   f"a user's case): chargedFoam {per('cfSpheres'):.0f} bytes, LIGGGHTS "
+                   f"{per('liggghts'):.0f} bytes ({per('cfSpheres')/per('liggghts'):.1f}x).")
+    return "\n".join(out)
 
 
 def cell_table(cs):
@@ -542,6 +595,11 @@ def main():
                     help="comma-separated mesh cell sizes [m]: after a run, time cfSpheres and ofIco "
                          "for each (windows of -cell-steps steps from the same pour)")
     ap.add_argument("-cell-steps", type=int, default=300)
+    ap.add_argument("-scale", default="",
+                    help="comma-separated numbers of spheres (e.g. 1e3,1e4,1e5): cost per particle-step "
+                         "and peak memory of cfSpheres and LIGGGHTS against N (beds of the benchmark's "
+                         "height; table added to the doc by the next -report)")
+    ap.add_argument("-scale-repeats", type=int, default=3)
     ap.add_argument("-report", action="store_true",
                     help="no runs: print the tables of the last run (RUNS/<mode>/results.json) and "
                          "rewrite the doc from it")
@@ -563,6 +621,14 @@ def main():
         env["PATH"] = os.path.join(snap, "bin") + ":" + env["PATH"]
         cs = cell_study(cfg, runs, env, [float(c) for c in args.cells.split(",")], args.cell_steps)
         print(cell_table(cs))
+        return 0
+
+    if args.scale:
+        os.makedirs(runs, exist_ok=True)
+        env = snapshot_chargedfoam(runs)
+        env["OMP_NUM_THREADS"] = "1"
+        sc = scale_study(runs, env, [int(float(v)) for v in args.scale.split(",")], args.scale_repeats)
+        print(scale_table(sc))
         return 0
 
     if args.report:
