@@ -638,6 +638,37 @@ TEST(rigidBodyRotation, SphereRotatesExactlyAboutFixedAxis)
 }
 
 
+TEST(rigidBodyRotation, SphereSmallAnglesAgreeWithTheExactRotation)
+{
+    // Angles per step on both sides of the series' threshold (half angle
+    // 1e-3) and far below it, 10^4 steps each: the rotation composed
+    // step by step against one Rodrigues rotation by the whole angle, and
+    // |q| = 1 kept by the normalisation
+    const scalar I = 2.5e-12;
+    const quaternion q0 = RBR::fromEulerAngles(0.4, -1.1, 2.3);
+    const tensor R0 = Rz(0.4) & Rx(-1.1) & Rz(2.3);
+    const vector axis(normalised(vector(0.3, -0.8, 0.5)));
+    for (const scalar angle : {1e-7, 1e-4, 1.99e-3, 2.01e-3, 0.05})
+    {
+        const scalar dt = 1e-5;
+        const vector Lin = I*(angle/dt)*axis;
+        const label nSteps = 10000;
+        quaternion q = q0;
+        for (label n = 0; n < nSteps; ++n)
+        {
+            RBR::sphereRotation(q, Lin, I, dt);
+        }
+        const tensor Rref = rodrigues(axis, angle*nSteps) & R0;
+        const scalar err = maxCmptDiff(q.R(), Rref);
+        const scalar normErr = mag(mag(q) - 1);
+        std::printf("    sphere, 10^4 steps of %g rad: max component error %.2e, | |q| - 1 | %.1e\n",
+            angle, err, normErr);
+        EXPECT_LT(err, 2e-12);
+        EXPECT_LT(normErr, 1e-14);
+    }
+}
+
+
 TEST(rigidBodyRotation, TimeReversible)
 {
     const vector I =
