@@ -1203,35 +1203,31 @@ void Foam::meshPoisson::removeSelfFields
             continue;
         }
         const scalar qw = qs_[i]*wLocal[i];
-        vector s;
-        if (selfFieldSampling_ == selfFieldSamplingType::charges)
-        {
-            s = selfField_->fieldAtCharge
-            (
-                xs_[i], celli, neighbourhood, shape, wallPlane, clear
-            );
-        }
-        else
+        vector s(Zero);
+        bool atCharge =
+            selfFieldSampling_ == selfFieldSamplingType::charges;
+        if (!atCharge)
         {
             s = selfField_->field
             (
                 xs_[i], celli, neighbourhood, shape, wallPlane, clear
             );
-            // shapeField_[i]/shapeSum_[i]: the mesh field at the charge
-            // (the whole shape is here), its self field included
+            // auto decides on the points' value (cached: each point is
+            // solved once): shapeField_[i]/shapeSum_[i] is the mesh field
+            // at the charge (the whole shape is here), its self field
+            // included
             const vector self(qw*s/shapeSum_[i]);
-            if
-            (
+            atCharge =
                 selfFieldSampling_ == selfFieldSamplingType::automatic
              && mag(self)
-              > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self)
-            )
-            {
-                s = selfField_->fieldAtCharge
-                (
-                    xs_[i], celli, neighbourhood, shape, wallPlane, clear
-                );
-            }
+              > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self);
+        }
+        if (atCharge)
+        {
+            s = selfField_->fieldAtCharge
+            (
+                xs_[i], celli, neighbourhood, shape, wallPlane, clear
+            );
         }
         shapeField_[i] -= qw*s;
     }
