@@ -5,7 +5,8 @@
 # (tests/tools/groundedBox.py, Ewald sum of the images); no self-force (a
 # lone charge in a cyclic box); the error falls with mesh refinement and
 # with the shape radius; the shaped correction beats Rasera's
-# Eq. 31 (cellCentroid); 2 processors equal serial; a tri-periodic box
+# Eq. 31 (cellCentroid); 2, 4 and 8 processors equal serial (the halo
+# holds fewer than all charges); a tri-periodic box
 # (cyclic patches, neutralising background) vs the periodic Ewald kernel; an
 # applied field from electrode potentials; bad input; a charge whose shape
 # is cut by a curved wall (grounded sphere vs Kelvin's image, grounded pipe
@@ -106,11 +107,11 @@ report("twoCharges", worst < 0.05, f"opposite charges 0.05, 0.15, 0.4 m apart, h
 rng = np.random.default_rng(1)
 x = 0.05 + 0.9*rng.random((100, 3)); q = 1e-9*(2*rng.random(100) - 1)
 ref = gb.field(x, q, 1.0)
-err = {}
+err, Eruns = {}, {}
 for name, n, coeffs in [("n16", 16, "radius 0.15;"), ("n32", 32, "radius 0.15;"),
                         ("R01", 32, "radius 0.1;"), ("R03", 32, "radius 0.3;"),
                         ("centroid", 32, "correction cellCentroid; rCut 0.15;")]:
-    E = run(name, x, q, n, coeffs=coeffs)
+    E = Eruns[name] = run(name, x, q, n, coeffs=coeffs)
     err[name] = rms_err(E, ref) if E is not None else np.inf
 e16, e32 = err["n16"], err["n32"]
 report("refinement", e32 < e16/2.5 and e32 < 0.004,
@@ -138,17 +139,56 @@ else:
     d = np.abs(Ep - Es).max()/np.abs(Es).max()
     report("parallel", d < 1e-7, f"2 processors vs serial: max |dE|/max|E| = {d:.1e}, tol 1e-7 (Poisson tolerance 1e-12)")
 
+# 5b. 8 processors (2 x 2 x 2: shapes cut by three processor planes, their
+#     weights and averages summed by the owner from the halo's shares): the
+#     serial field, and no processor holds the whole cloud
+def halo_max(case):
+    import re
+    m = re.search(r"of (\d+) charges each processor holds its own and at most (\d+)", case)
+    return (int(m.group(1)), int(m.group(2))) if m else (0, -1)
+c8 = FarFieldCase(f"{work}/parallel8", x, q, 1.0, 32, "meshPoisson", "radius 0.1;")
+try:
+    c8.run(8)
+    Ep8 = c8.fields()[0]
+    nAll, nHalo = halo_max(c8.log())
+except RuntimeError as e:
+    print(f"    {e}")
+    Ep8, nAll, nHalo = None, 0, -1
+Es8 = Eruns["R01"]
+if Es8 is None or Ep8 is None:
+    report("parallel8", False, "run failed")
+else:
+    d = np.abs(Ep8 - Es8).max()/np.abs(Es8).max()
+    report("parallel8", d < 1e-7 and 0 <= nHalo < nAll - 20,
+           f"8 processors vs serial, radius 0.1 m: max |dE|/max|E| = {d:.1e}, tol 1e-7; each processor holds its own charges and at most {nHalo} of the others (of {nAll}; halo 4 R = 0.4 m)")
+
 # 6. Tri-periodic box (cyclic patches, neutralising background: net charge
 #    != 0) vs the periodic Ewald kernel (electrostaticsModel periodic)
 qp = 1e-9*(2*rng.random(100) - 0.8)
 xp = rng.random((100, 3))
 Eew = run("ewald", xp, qp, 4, model="periodic", coeffs="method ewald; accuracy 1e-10;", periodic=True)
-res = {}
+res, Ecyc = {}, {}
 for n in (16, 32):
-    E = run(f"cyclic{n}", xp, qp, n, periodic=True)
+    E = Ecyc[n] = run(f"cyclic{n}", xp, qp, n, periodic=True)
     res[n] = rms_err(E, Eew) if (E is not None and Eew is not None) else np.inf
 report("periodic", res[32] < 0.006 and res[32] < res[16]/2.5,
        f"cyclic box, net charge {qp.sum():.1e} C, vs Ewald: rms rel. error h = 1/16: {res[16]:.2e}, 1/32: {res[32]:.2e} (< 0.006, ratio >= 2.5)")
+
+# 6b. The tri-periodic box on 4 processors (the halo crosses the cyclic
+#     patches: copies of a neighbour's charges made from the halo) and the
+#     cellCentroid correction on 4 processors (cell centres in the halo)
+#     equal serial
+Es16 = Ecyc[16]
+Ep16 = run("cyclic16p", xp, qp, 16, periodic=True, nProcs=4)
+Ec = Eruns["centroid"]
+Ecp = run("centroidP", x, q, 32, coeffs="correction cellCentroid; rCut 0.15;", nProcs=4)
+if any(v is None for v in (Es16, Ep16, Ec, Ecp)):
+    report("parallelPeriodic", False, "run failed")
+else:
+    d1 = np.abs(Ep16 - Es16).max()/np.abs(Es16).max()
+    d2 = np.abs(Ecp - Ec).max()/np.abs(Ec).max()
+    report("parallelPeriodic", d1 < 1e-7 and d2 < 1e-7,
+           f"4 processors vs serial: cyclic box h = 1/16 max |dE|/max|E| = {d1:.1e}, cellCentroid in the grounded box {d2:.1e}, tol 1e-7")
 
 # 7. Applied field: electrodes at 0 V and 100 V 1 m apart, insulating
 #    sides; two neutral probes see E = (-100, 0, 0) V/m

@@ -4,7 +4,7 @@
 # to round-off at every step (serial and 2 processors, where contacts across
 # the processor boundary are charged on both sides); contacts did charge;
 # a restart (charges, contact areas and fields read back) continues the run
-# exactly; the 2-processor run reproduces the serial one.
+# exactly; the 2- and 4-processor runs reproduce the serial one.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase ellipsoidPour "$work/serial"
@@ -33,6 +33,7 @@ setEndTime 0.08
 setWriteInterval 200
 cp -r "$work/serial" "$work/restarted"
 cp -r "$work/serial" "$work/parallel"
+cp -r "$work/serial" "$work/parallel4"
 
 run blockMesh blockMesh && run solver chargedParticleFoam \
     || fail "triboCharging.serialRun (solver failed)"
@@ -82,3 +83,17 @@ run reconstructPar reconstructPar || fail "triboCharging.parallel (reconstructPa
 $PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel/0.04" \
     --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel
 balance "$work/parallel" parallel
+
+# 4 processors (2 x 2 across the box): contacts across each processor
+# boundary charge the partner through its processor only
+cd "$work/parallel4" || exit 1
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
+run blockMesh blockMesh
+run decomposePar decomposePar || fail "triboCharging.parallel4 (decomposePar)"
+setEndTime 0.04
+run solver mpirun -np 4 chargedParticleFoam -parallel \
+    || fail "triboCharging.parallel4 (mpirun failed)"
+run reconstructPar reconstructPar || fail "triboCharging.parallel4 (reconstructPar)"
+$PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel4/0.04" \
+    --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel4
+balance "$work/parallel4" parallel4

@@ -14,9 +14,14 @@ the resident high-water mark (VmHWM) of the S-step run.
     commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
                   [--rungs cutoffCoulomb,directCoulomb,meshPoisson]
                   [--work /tmp/commVolume]
+    commVolume.py --pingpong    (latency and bandwidth between 2 ranks)
+    commVolume.py --rungs shortDuct --n 400 --ranks 2,4,8
+                  (tutorials/shortDuct with its parcels along the whole
+                  duct, P slabs: the flagship's physics, strong scaling)
 
 Prints one table per rung (ranks, mean and max bytes/step per rank,
-messages/step per rank, peak memory per rank in MB) and the ratio of the
+messages/step per rank, all-reduce and all-to-all calls per step, peak
+memory per rank in MB) and the ratio of the
 bytes per rank at the largest and at 2 ranks (flat within 20 % is the weak
 scaling target). More ranks than cores run oversubscribed: only volumes
 and memory are meaningful then, not time.
@@ -108,18 +113,45 @@ def make_case(case, P, n, rung, steps, seed=1):
     open(p, "w").write(s)
 
 
-def tally(case, P, lib):
+def make_duct(case, P, n, steps):
+    """tutorials/shortDuct (chargedDPMFoam: gas, contact, wall and particle
+    charging, meshPoisson) with n parcels along the whole duct, split into
+    P slabs along it: the flagship's physics under strong scaling"""
+    if os.path.exists(case):
+        shutil.rmtree(case)
+    shutil.copytree(os.path.join(TOP, "tutorials", "shortDuct"), case,
+                    ignore=shutil.ignore_patterns("[1-9]*", "processor*", "log.*", "*.png"))
+    duct = os.path.join(TOP, "tutorials", "chargedDuct")
+    subprocess.run([sys.executable, os.path.join(duct, "makeParcels.py"), str(n), "1", "0.245"],
+                   cwd=case, stdout=subprocess.DEVNULL, check=True)
+    p = os.path.join(case, "system", "controlDict")
+    s = open(p).read()
+    s = re.sub(r"^endTime .*?;", f"endTime {steps*1e-4:.10g};", s, flags=re.M)
+    s = re.sub(r"^writeInterval .*?;", "writeInterval 100000;", s, flags=re.M)
+    open(p, "w").write(s)
+    p = os.path.join(case, "constant", "cloudProperties")
+    s = open(p).read()
+    s = re.sub(r"sceneCheck\s*\{[^}]*\}", "", s)
+    s += "\nsceneCheck { active false; }\n"
+    open(p, "w").write(s)
+    with open(os.path.join(case, "system", "decomposeParDict"), "w") as f:
+        f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+                f"numberOfSubdomains {P};\nmethod simple;\ncoeffs {{ n ({P} 1 1); }}\n")
+
+
+def tally(case, P, lib, solver="chargedParticleFoam"):
     out = os.path.join(case, "tally.txt")
     if os.path.exists(out):
         os.remove(out)
     sh("blockMesh", case, "log.blockMesh")
     env = f"-x LD_PRELOAD={lib} -x MPI_TALLY_FILE={out}"
     sh("decomposePar -force", case, "log.decomposePar")
-    sh(f"mpirun --oversubscribe -np {P} {env} chargedParticleFoam -parallel", case, "log.solver")
+    sh(f"mpirun --oversubscribe -np {P} {env} {solver} -parallel", case, "log.solver")
     rows = {}
     for line in open(out):
         f = line.split()
-        rows[int(f[1])] = (int(f[3]), int(f[5]), int(f[7]))
+        # messages, bytes, peak RSS [kB], all-reduce and all-to-all calls
+        rows[int(f[1])] = (int(f[3]), int(f[5]), int(f[7]), int(f[9]), int(f[11]))
     return rows
 
 
@@ -130,8 +162,17 @@ def main():
     ap.add_argument("--steps", default="2,12")
     ap.add_argument("--rungs", default="cutoffCoulomb,directCoulomb,meshPoisson")
     ap.add_argument("--work", default="/tmp/commVolume")
+    ap.add_argument("--pingpong", action="store_true",
+                    help="only measure the latency and bandwidth between two ranks (pingPong.c)")
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
+    if os.geteuid() == 0:
+        os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    if a.pingpong:
+        exe = os.path.join(a.work, "pingPong")
+        subprocess.run(["mpicc", "-O2", "-o", exe, os.path.join(HERE, "pingPong.c")], check=True)
+        subprocess.run(["mpirun", "-np", "2", exe], check=True)
+        return
     lib = os.path.join(a.work, "libmpiTally.so")
     subprocess.run(["mpicc", "-shared", "-fPIC", "-O2", "-o", lib,
                     os.path.join(HERE, "mpiTally.c")], check=True)
@@ -139,24 +180,41 @@ def main():
         os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     S0, S = (int(v) for v in a.steps.split(","))
     ranks = [int(v) for v in a.ranks.split(",")]
-    print(f"weak scaling: {a.n} parcels and 1000 cells per rank; per step from {S - S0} steps "
-          f"({S} minus {S0}); peak memory of the {S}-step run")
+    print(f"per step from {S - S0} steps ({S} minus {S0}); peak memory of the {S}-step run; "
+          f"the rungs under weak scaling: {a.n} parcels and 1000 cells per rank")
     for rung in a.rungs.split(","):
-        print(f"\n{rung}")
-        print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | peak memory per rank [MB] (max) |")
-        print("| --- | --- | --- | --- | --- |")
+        duct = rung == "shortDuct"
+        print(f"\n{rung}" + (f" (strong scaling: {a.n} parcels in all, per fluid step)" if duct else ""))
+        print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | all-reduces/step | all-to-alls/step | peak memory per rank [MB] (max) |")
+        print("| --- | --- | --- | --- | --- | --- | --- |")
         perRank = {}
+        notes = []
         for P in ranks:
             res = []
             for steps in (S0, S):
                 case = os.path.join(a.work, f"{rung}-P{P}-S{steps}")
-                make_case(case, P, a.n, rung, steps)
-                res.append(tally(case, P, lib))
+                if duct:
+                    make_duct(case, P, a.n, steps)
+                    res.append(tally(case, P, lib, "chargedDPMFoam"))
+                else:
+                    make_case(case, P, a.n, rung, steps)
+                    res.append(tally(case, P, lib))
             b = np.array([(res[1][r][1] - res[0][r][1])/(S - S0) for r in range(P)])
             m = np.array([(res[1][r][0] - res[0][r][0])/(S - S0) for r in range(P)])
+            ar = np.mean([(res[1][r][3] - res[0][r][3])/(S - S0) for r in range(P)])
+            aa = np.mean([(res[1][r][4] - res[0][r][4])/(S - S0) for r in range(P)])
             mem = max(res[1][r][2] for r in range(P))/1024
+            if duct:
+                # CPU seconds per parcel and fluid step (the master's
+                # ExecutionTime; meaningful while P <= cores)
+                cpu = [float(re.findall(r"ExecutionTime = ([0-9.e+-]+) s",
+                                        open(os.path.join(a.work, f"{rung}-P{P}-S{k}", "log.solver")).read())[-1])
+                       for k in (S0, S)]
+                notes.append(f"compute at {P} ranks: {(cpu[1] - cpu[0])*P/((S - S0)*a.n):.3e} "
+                             f"CPU s per parcel and fluid step")
             perRank[P] = b.mean()
-            print(f"| {P} | {b.mean():.3g} | {b.max():.3g} | {m.mean():.3g} | {mem:.0f} |")
+            print(f"| {P} | {b.mean():.3g} | {b.max():.3g} | {m.mean():.3g} | {ar:.3g} | {aa:.3g} | {mem:.0f} |", flush=True)
+        print("\n".join(notes))
         big = max(ranks)
         if 2 in perRank and perRank[2] > 0 and big > 2:
             print(f"bytes per rank and step, {big} ranks / 2 ranks: {perRank[big]/perRank[2]:.2f}")

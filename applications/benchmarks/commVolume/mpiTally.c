@@ -10,6 +10,11 @@
     file named by MPI_TALLY_FILE:
 
         rank <r> messages <n> bytes <b> peakRSS_kB <VmHWM>
+            allreduce <calls> alltoall <calls>
+
+    (the collectives' calls separately: their cost grows with the number
+    of ranks, log2(P) latencies for an all-reduce, up to P for an
+    all-to-all)
 
     Written in C on purpose: no MPI tool in Debian reports per-rank volumes
     without a profiler installation, and the shim is 100 lines.
@@ -30,6 +35,8 @@
 
 static long long tallyMessages = 0;
 static long long tallyBytes = 0;
+static long long tallyAllreduce = 0;
+static long long tallyAlltoall = 0;
 
 static void tally(int count, MPI_Datatype type)
 {
@@ -83,6 +90,7 @@ int MPI_Allreduce
 )
 {
     tally(c, t);
+    ++tallyAllreduce;
     return PMPI_Allreduce(s, r, c, t, o, m);
 }
 
@@ -95,6 +103,7 @@ int MPI_Alltoall
     int n = 1;
     PMPI_Comm_size(m, &n);
     tally(sc*n, st);
+    ++tallyAlltoall;
     return PMPI_Alltoall(s, sc, st, r, rc, rt, m);
 }
 
@@ -108,6 +117,7 @@ int MPI_Alltoallv
     PMPI_Comm_size(m, &n);
     for (i = 0; i < n; ++i) total += sc[i];
     tally(total, st);
+    ++tallyAlltoall;
     return PMPI_Alltoallv(s, sc, sd, st, r, rc, rd, rt, m);
 }
 
@@ -164,8 +174,11 @@ int MPI_Finalize(void)
         {
             fprintf
             (
-                out, "rank %d messages %lld bytes %lld peakRSS_kB %ld\n",
-                rank, tallyMessages, tallyBytes, peak
+                out,
+                "rank %d messages %lld bytes %lld peakRSS_kB %ld"
+                " allreduce %lld alltoall %lld\n",
+                rank, tallyMessages, tallyBytes, peak, tallyAllreduce,
+                tallyAlltoall
             );
             fclose(out);
         }

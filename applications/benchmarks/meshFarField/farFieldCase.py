@@ -143,11 +143,6 @@ snGradSchemes { default corrected; }
         _write(p + "/system/fvSolution", "fvSolution", f"""
 solvers {{ Phi {{ {solver} tolerance {self.tol!r}; relTol 0; }} }}
 """)
-        _write(p + "/system/decomposeParDict", "decomposeParDict", """
-numberOfSubdomains 2;
-method simple;
-coeffs { n (2 1 1); }
-""")
         _write(p + "/constant/g", "g", """
 dimensions [0 1 -2 0 0 0 0];
 value (0 0 0);
@@ -206,6 +201,13 @@ cloudFunctions {{}}
         self._sh("blockMesh", "blockMesh")
         t0 = time.time()
         if nProcs > 1:
+            # simple: halves along x, then y, then z (2, 4, 8 processors)
+            split = {2: "2 1 1", 4: "2 2 1", 8: "2 2 2"}.get(nProcs, f"{nProcs} 1 1")
+            _write(self.path + "/system/decomposeParDict", "decomposeParDict", f"""
+numberOfSubdomains {nProcs};
+method simple;
+coeffs {{ n ({split}); }}
+""")
             self._sh("decomposePar -force", "decomposePar")
             self._sh(f"mpirun -np {nProcs} chargedParticleFoam -parallel",
                      "chargedParticleFoam")

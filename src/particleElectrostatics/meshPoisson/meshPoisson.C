@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meshPoisson.H"
+#include "processorCyclicPolyPatch.H"
 #include "cutoffPairs.H"
 #include "fvm.H"
 #include "fvc.H"
@@ -275,6 +276,30 @@ void Foam::meshPoisson::findPeriodicShifts()
         else if (cpp->size())
         {
             s = cpp->separationVector();
+        }
+        else
+        {
+            // A processor split along the periodic direction holds its
+            // faces as processorCyclic patches (the cyclic itself has none
+            // on any processor): the translation between a face and its
+            // neighbour's
+            for (const polyPatch& pp : pbm)
+            {
+                const processorCyclicPolyPatch* pcp =
+                    isA<processorCyclicPolyPatch>(pp);
+                if
+                (
+                    pcp && pcp->size()
+                 && (
+                        pcp->referPatchID() == patchi
+                     || pcp->referPatchID() == cpp->neighbPatchID()
+                    )
+                )
+                {
+                    s = pcp->neighbFaceCentres()[0] - pcp->faceCentres()[0];
+                    break;
+                }
+            }
         }
         reduce(s, maxMagSqrOp<vector>());
         if (magSqr(s) > 0)
@@ -923,8 +948,10 @@ void Foam::meshPoisson::shapeWeights
         }
         shapeStart_[i + 1] = shapeCells_.size();
     }
-    Pstream::listCombineGather(shapeSum_, plusEqOp<scalar>());
-    Pstream::listCombineScatter(shapeSum_);
+    // Each charge's owner sums the shares of every processor, then tells
+    // the processors that hold it in their halo
+    halo_->sumToOwners(shapeSum_);
+    halo_->updateHalo(shapeSum_);
 
     forAll(shapeSum_, i)
     {
@@ -1007,8 +1034,8 @@ void Foam::meshPoisson::averageOverShapes
             i < nReal ? sum : sourceSign_[i]*(sourceT_[i].T() & sum);
     }
     removeSelfFields(origin, nReal);
-    Pstream::listCombineGather(shapeField_, plusEqOp<vector>());
-    Pstream::listCombineScatter(shapeField_);
+    // The owners' sums (the halo entries are not used)
+    halo_->sumToOwners(shapeField_);
     shapeField_ /= shapeSum_;
 }
 
@@ -1304,7 +1331,6 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         -fvc::grad(Phi_)
     ),
     shapeFresh_(false),
-    farStart_(-1),
     farValid_(false),
     wallRMax_(0),
     nRealSources_(-1),
@@ -1348,6 +1374,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     binCells();
     localBb_ = boundBox(mesh.points(), false);
     localBb_.inflate(1e-6);
+    processorBoxes_ = processorHalo::processorBoxes(mesh);
 
     if (correction_ == correctionType::shaped)
     {
@@ -1522,26 +1549,64 @@ bool Foam::meshPoisson::reapplyTransforms
 }
 
 
+Foam::scalar Foam::meshPoisson::haloRange() const
+{
+    // shaped: periodic copies are made within 2.5 R of the box, wall
+    // images of the charges within 4 R (addWallImages), the correction
+    // reaches 2 R; cellCentroid: copies within 1.5 R, correction R
+    return (correction_ == correctionType::shaped ? 4 : 1.5)*radius_;
+}
+
+
 void Foam::meshPoisson::update
 (
     const UList<point>& x,
     const UList<scalar>& q,
-    const label myStart,
+    const UList<labelPair>& keys,
     const labelUList& cells
 )
 {
-    const label nReal = x.size();
     const bool solveNow =
         nEvaluations_++ % solveInterval_ == 0 || !solved_;
+
+    // The charges known here: the local ones and the halo
+    halo_.reset
+    (
+        new processorHalo
+        (
+            processorBoxes_, x, haloRange(), periodicTranslations()
+        )
+    );
+    const pointField& xK = halo_->points();
+    scalarField qK(q);
+    halo_->gather(qK);
+    List<labelPair> keysK(keys);
+    halo_->gather(keysK);
+    if (correction_ == correctionType::cellCentroid)
+    {
+        sourceCellCentres_ = pointField(mesh_.C().primitiveField(), cells);
+        halo_->gather(sourceCellCentres_);
+    }
+    const label nReal = xK.size();
+    if (nEvaluations_ == 1 && Pstream::parRun())
+    {
+        Info<< "    Mesh far field in parallel: of "
+            << returnReduce(x.size(), sumOp<label>()) << " charges each"
+            << " processor holds its own and at most "
+            << returnReduce(nReal - x.size(), maxOp<label>())
+            << " of its neighbours' (halo " << haloRange() << " m)" << endl;
+    }
 
     // Sources: the charges, their periodic copies and wall images. Found
     // when solving; in between, the same copies and images of the moved
     // charges (unless the charges changed)
-    const bool sourcesFound = solveNow || !reapplyTransforms(x, q);
+    const bool sourcesFound =
+        solveNow || keysK != sourceKeys_ || !reapplyTransforms(xK, qK);
     if (sourcesFound)
     {
-        xs_ = x;
-        qs_ = q;
+        xs_ = xK;
+        qs_ = qK;
+        sourceKeys_.transfer(keysK);
         srcOf_.clear();
         srcT_.clear();
         srcB_.clear();
@@ -1569,13 +1634,13 @@ void Foam::meshPoisson::update
         }
         else
         {
-            // Each charge in its cell (Rasera 2022 section 2.3)
+            // Each local charge in its cell (Rasera 2022 section 2.3)
             scalarField& rho = rhoQ_.primitiveFieldRef();
             rho = 0;
             const scalarField& V = mesh_.V().field();
             forAll(cells, i)
             {
-                rho[cells[i]] += q[myStart + i]/V[cells[i]];
+                rho[cells[i]] += q[i]/V[cells[i]];
             }
         }
         rhoQ_.correctBoundaryConditions();
@@ -1598,15 +1663,15 @@ void Foam::meshPoisson::update
 void Foam::meshPoisson::addNearField
 (
     const UList<point>& xT,
-    const label myStart,
-    const UList<point>& cellCentres,
     UList<vector>& E
 )
 {
     const pointField& xs = xs_;
     const scalarField& qs = qs_;
     const labelList& origin = origin_;
-    const label nReal = cellCentres.size();
+    const label nReal = nRealSources_;
+    // The targets are the local charges, the first sources
+    const label myStart = 0;
 
     // Near field: exact Coulomb minus what the mesh carries
     const scalar k = pairwiseCoulomb(epsilonR_).k();
@@ -1627,8 +1692,7 @@ void Foam::meshPoisson::addNearField
         // The far part: after a solve, or for charges that changed or
         // moved between processors (the shapes' average then at their
         // current positions in the same mesh field)
-        bool stale =
-            !farValid_ || farStart_ != myStart || farField_.size() != xT.size();
+        bool stale = !farValid_ || farField_.size() != xT.size();
         reduce(stale, orOp<bool>());
         if (stale)
         {
@@ -1638,7 +1702,7 @@ void Foam::meshPoisson::addNearField
                 averageOverShapes(origin_, nRealSources_);
                 shapeFresh_ = true;
             }
-            farField_ = SubList<vector>(shapeField_, xT.size(), myStart);
+            farField_ = SubList<vector>(shapeField_, xT.size());
             forPairsWithinCutoff
             (
                 xT, xs, 2*R, myStart,
@@ -1650,7 +1714,6 @@ void Foam::meshPoisson::addNearField
                     }
                 }
             );
-            farStart_ = myStart;
             farValid_ = true;
         }
 
@@ -1676,6 +1739,7 @@ void Foam::meshPoisson::addNearField
     {
         // Rasera Eq. 31: exact minus the centroid-to-centroid field of
         // charges in other cells
+        const pointField& cellCentres = sourceCellCentres_;
         pointField cs(cellCentres);
         {
             // Copies share the shift of their charge

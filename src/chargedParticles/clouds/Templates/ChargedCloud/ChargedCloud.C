@@ -491,7 +491,7 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
     {
         const contactModelType& ec =
             static_cast<const contactModelType&>(this->collision());
-        triboCharging().transfer(ec.contacts());
+        triboCharging().transfer(ec.contacts(), ec.referralNeighbours());
     }
 
     if (electrostatics().active())

@@ -6,6 +6,7 @@
 #include "mathematicalConstants.H"
 #include "volFields.H"
 #include "PstreamBuffers.H"
+#include "mapDistribute.H"
 #include "cutoffPairs.H"
 #include "hertzOnset.H"
 #include "rigidBodyRotation.H"
@@ -976,11 +977,13 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     const contactBody& B,
     const point& xB,
     vector& xi,
-    const bool referred,
+    const label referredFrom,
     vector& torqueA,
     vector& torqueB
 )
 {
+    const bool referred = referredFrom >= 0;
+
     // A contact with a referred parcel is also evaluated on the referred
     // parcel's processor: half of its energy is booked here
     const scalar energyWeight = referred ? 0.5 : 1;
@@ -992,7 +995,10 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 
     if (recordContacts_)
     {
-        contacts_.append({A.p, B.p, xA, xB, c, A.radius, -1, referred});
+        contacts_.append
+        (
+            {A.p, B.p, xA, xB, c, A.radius, -1, referred, referredFrom}
+        );
     }
 
     // Contact point: the midpoint (exact angular momentum balance)
@@ -1086,7 +1092,7 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             nPairSides_ += 2;
 
             const vector F =
-                pairForce(c, A, xA, B, xB, xi, false, torque_[i], torque_[j]);
+                pairForce(c, A, xA, B, xB, xi, -1, torque_[i], torque_[j]);
             force_[i] += F;
             force_[j] -= F;
         }
@@ -1101,6 +1107,17 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
     List<IDLList<parcelType>>& referredParticles = il_.referredParticles();
     List<DynamicList<parcelType*>>& cellOccupancy =
         this->owner().cellOccupancy();
+
+    // The processor each referred cell came from
+    labelList from(ril.size(), Pstream::myProcNo());
+    const labelListList& constructMap = il_.cellMap().constructMap();
+    forAll(constructMap, proci)
+    {
+        for (const label refCelli : constructMap[proci])
+        {
+            from[refCelli] = proci;
+        }
+    }
 
     forAll(ril, refCelli)
     {
@@ -1142,7 +1159,8 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
                     pA.f() +=
                         pairForce
                         (
-                            c, A, xA, R, xR, xi, true, pA.torque(), torqueR
+                            c, A, xA, R, xR, xi, from[refCelli], pA.torque(),
+                            torqueR
                         );
                 }
             }
@@ -1236,7 +1254,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         parcelType& p = *b.p;
         if (recordContacts_)
         {
-            contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false});
+            contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false, -1});
         }
 
         const point xc = 0.5*(c.x1 + c.x2);
@@ -1651,6 +1669,30 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::labelList
+Foam::EllipsoidCollision<CloudType>::referralNeighbours() const
+{
+    DynamicList<label> procs;
+    if (Pstream::parRun())
+    {
+        const mapDistribute& map = il_.cellMap();
+        forAll(map.subMap(), proci)
+        {
+            if
+            (
+                proci != Pstream::myProcNo()
+             && (map.subMap()[proci].size() || map.constructMap()[proci].size())
+            )
+            {
+                procs.append(proci);
+            }
+        }
+    }
+    return labelList(std::move(procs));
+}
+
 
 template<class CloudType>
 Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime

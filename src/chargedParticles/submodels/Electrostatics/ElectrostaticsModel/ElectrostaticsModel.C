@@ -6,8 +6,7 @@
 #include "cpuTime.H"
 #include "NearFieldModel.H"
 #include "ListListOps.H"
-#include "PstreamBuffers.H"
-#include "boundBox.H"
+#include "processorHalo.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -139,20 +138,6 @@ void Foam::ElectrostaticsModel<CloudType>::gatherCharges
 {
     List<pointField> allX;
     List<scalarField> allQ;
-    gatherCharges(allX, allQ, x, q, myStart);
-}
-
-
-template<class CloudType>
-void Foam::ElectrostaticsModel<CloudType>::gatherCharges
-(
-    List<pointField>& allX,
-    List<scalarField>& allQ,
-    pointField& x,
-    scalarField& q,
-    label& myStart
-) const
-{
     gatherCharges(allX, allQ);
     combine(allX, allQ, x, q, myStart);
 }
@@ -168,84 +153,37 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
 ) const
 {
     const label n = this->owner().size();
-    DynamicList<point> xs(n);
-    DynamicList<scalar> qs(n);
-    DynamicList<label> is(2*n);
+    pointField xLocal(n);
+    scalarField qLocal(n);
+    List<labelPair> keys(n);
+    label i = 0;
     for (const auto& p : this->owner())
     {
-        xs.append(p.centre());
-        qs.append(p.q());
-        is.append(p.origProc());
-        is.append(p.origId());
+        xLocal[i] = p.centre();
+        qLocal[i] = p.q();
+        keys[i] = labelPair(p.origProc(), p.origId());
+        ++i;
     }
 
-    if (Pstream::parRun())
+    // The range is the same on every processor (no boxes without a halo)
+    const processorHalo halo
+    (
+        range > 0
+      ? processorHalo::processorBoxes(this->owner().mesh())
+      : List<boundBox>(),
+        xLocal,
+        range
+    );
+    x = halo.points();
+    halo.gather(qLocal);
+    q.transfer(qLocal);
+    halo.gather(keys);
+    ids.setSize(2*keys.size());
+    forAll(keys, j)
     {
-        // The processors' boxes (one each: O(P) words, not O(N))
-        const label me = Pstream::myProcNo();
-        List<boundBox> boxes(Pstream::nProcs());
-        // This processor's own points (polyMesh::bounds() is the global
-        // box in parallel)
-        boxes[me] = boundBox(this->owner().mesh().points(), false);
-        Pstream::gatherList(boxes);
-        Pstream::scatterList(boxes);
-
-        // Processor j gets my parcels inside its box grown by range; the
-        // same test tells j from whom to receive
-        const vector margin(range, range, range);
-        auto grown = [&](const label j)
-        {
-            return boundBox(boxes[j].min() - margin, boxes[j].max() + margin);
-        };
-        auto neighbours = [&](const label i, const label j)
-        {
-            return
-                i != j && boxes[i].valid() && boxes[j].valid()
-             && grown(j).overlaps(boxes[i]);
-        };
-
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-        forAll(boxes, proci)
-        {
-            if (neighbours(me, proci))
-            {
-                const boundBox halo(grown(proci));
-                DynamicList<point> xSend;
-                DynamicList<scalar> qSend;
-                DynamicList<label> idSend;
-                for (label i = 0; i < n; ++i)
-                {
-                    if (halo.contains(xs[i]))
-                    {
-                        xSend.append(xs[i]);
-                        qSend.append(qs[i]);
-                        idSend.append(is[2*i]);
-                        idSend.append(is[2*i + 1]);
-                    }
-                }
-                UOPstream toProc(proci, pBufs);
-                toProc << xSend << qSend << idSend;
-            }
-        }
-        pBufs.finishedSends();
-        forAll(boxes, proci)
-        {
-            if (neighbours(proci, me))
-            {
-                UIPstream fromProc(proci, pBufs);
-                const pointField xr(fromProc);
-                const scalarField qr(fromProc);
-                const labelList idr(fromProc);
-                xs.append(xr);
-                qs.append(qr);
-                is.append(idr);
-            }
-        }
+        ids[2*j] = keys[j].first();
+        ids[2*j + 1] = keys[j].second();
     }
-
-    x.transfer(xs);
-    q.transfer(qs);
-    ids.transfer(is);
 }
 
 

@@ -82,52 +82,30 @@ Foam::MeshPoisson<CloudType>::MeshPoisson
 template<class CloudType>
 void Foam::MeshPoisson<CloudType>::calculate()
 {
-    // All charges as the sources, and per processor (the contact
-    // correction wants those)
-    List<pointField> allX;
-    List<scalarField> allQ;
-    pointField xS;
-    scalarField qS;
-    label offset = 0;
-    this->gatherCharges(allX, allQ, xS, qS, offset);
-
-    // The cells of the local parcels, and for the cellCentroid correction
-    // (Rasera Eq. 31 compares them) the centres of all parcels' cells
+    // The local parcels: the solver exchanges its own halo (the charges
+    // within reach of each processor's cells)
     const label n = this->owner().size();
-    const bool centroids =
-        solver_->correction() == meshPoisson::correctionType::cellCentroid;
+    pointField x(n);
+    scalarField q(n);
+    List<labelPair> keys(n);
     labelList cells(n);
-    List<pointField> allC(Pstream::nProcs());
-    pointField& c = allC[Pstream::myProcNo()];
-    c.setSize(centroids ? n : 0);
-    const volVectorField& C = this->owner().mesh().C();
     label i = 0;
     for (const auto& p : this->owner())
     {
+        x[i] = p.centre();
+        q[i] = p.q();
+        keys[i] = labelPair(p.origProc(), p.origId());
         cells[i] = p.cell();
-        if (centroids)
-        {
-            c[i] = C[p.cell()];
-        }
         ++i;
-    }
-    pointField cS;
-    if (centroids)
-    {
-        Pstream::gatherList(allC);
-        Pstream::scatterList(allC);
-        scalarField dummy;
-        label o;
-        this->combine(allC, allQ, cS, dummy, o);
     }
 
     // Mesh field at the parcels: interpolated (cellCentroid: their own tet
     // coordinates, no search; at the centre within the cell while lazy
     // tracking lets it drift) or averaged over their shapes (shaped, in
     // addNearField); then the near-field correction
-    solver_->update(xS, qS, offset, cells);
-    vectorField E(n);
-    if (centroids)
+    solver_->update(x, q, keys, cells);
+    vectorField E(n, Zero);
+    if (solver_->correction() == meshPoisson::correctionType::cellCentroid)
     {
         const interpolation<vector>& EMesh = solver_->interpolator();
         i = 0;
@@ -139,17 +117,14 @@ void Foam::MeshPoisson<CloudType>::calculate()
               : EMesh.interpolate(p.centre(), p.cell());
         }
     }
-    else
-    {
-        // All of it from addNearField
-        E = Zero;
-    }
-    solver_->addNearField
-    (
-        SubList<point>(xS, n, offset), offset, cS, E
-    );
+    solver_->addNearField(x, E);
 
-    this->setFields(allX, allQ, E);
+    // The contact partners' charges for the reduced-stiffness correction
+    pointField xS;
+    scalarField qS;
+    labelList ids;
+    this->gatherPairHalo(xS, qS, ids);
+    this->setFields(xS, qS, ids, E);
 }
 
 

@@ -6,6 +6,7 @@
 #include "ellipsoid.H"
 #include "wallPolyPatch.H"
 #include "mathematicalConstants.H"
+#include "PstreamBuffers.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -311,18 +312,20 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
 template<class CloudType>
 void Foam::RaseraTriboCharging<CloudType>::transfer
 (
-    const UList<ParcelContact<parcelType>>& contacts
+    const UList<ParcelContact<parcelType>>& contacts,
+    const labelUList& neighbours
 )
 {
     // All transfers from the charges before this collide, then applied.
     // A pair across processors is seen on both: only the side of the
     // lower (origProc, origId) transfers, and sends the partner's share to
-    // the partner's processor, so the processors balance to the last bit
-    // (the two sides' contact geometries differ at round-off). Both sides
-    // still update their area records
+    // the processor that referred the partner (a copy across a cyclic on
+    // this processor: to itself), so the processors balance to the last
+    // bit (the two sides' contact geometries differ at round-off). Both
+    // sides still update their area records
     dq_.setSize(contacts.size());
-    DynamicList<label> sentIds;
-    DynamicList<scalar> sentDq;
+    List<DynamicList<label>> sentIds(Pstream::nProcs());
+    List<DynamicList<scalar>> sentDq(Pstream::nProcs());
     forAll(contacts, k)
     {
         const ParcelContact<parcelType>& c = contacts[k];
@@ -336,9 +339,10 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
              || (pA.origProc() == pB.origProc() && pA.origId() < pB.origId());
             if (lower)
             {
-                sentIds.append(pB.origProc());
-                sentIds.append(pB.origId());
-                sentDq.append(dq_[k]);
+                const label proci = c.referredFrom;
+                sentIds[proci].append(pB.origProc());
+                sentIds[proci].append(pB.origId());
+                sentDq[proci].append(dq_[k]);
             }
             else
             {
@@ -370,40 +374,53 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
         }
     }
 
+    // The partners' shares, exchanged with the neighbours only (those
+    // that refer parcels here and receive this processor's)
+    const label me = Pstream::myProcNo();
+    HashTable<scalar, labelPair, Hash<labelPair>> received;
+    const auto receive = [&](const labelList& ids, const scalarList& dq)
+    {
+        forAll(dq, j)
+        {
+            received(labelPair(ids[2*j], ids[2*j + 1])) += dq[j];
+        }
+    };
+    receive(sentIds[me], sentDq[me]);
+    forAll(sentDq, proci)
+    {
+        if (sentDq[proci].size() && proci != me && !neighbours.found(proci))
+        {
+            FatalErrorInFunction
+                << "A contact with a parcel referred from processor "
+                << proci << ", not a referral neighbour" << abort(FatalError);
+        }
+    }
     if (Pstream::parRun())
     {
-        List<labelList> allIds(Pstream::nProcs());
-        List<scalarList> allDq(Pstream::nProcs());
-        allIds[Pstream::myProcNo()] = sentIds;
-        allDq[Pstream::myProcNo()] = sentDq;
-        Pstream::gatherList(allIds);
-        Pstream::scatterList(allIds);
-        Pstream::gatherList(allDq);
-        Pstream::scatterList(allDq);
-
-        HashTable<scalar, labelPair, Hash<labelPair>> received;
-        forAll(allIds, proci)
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        for (const label proci : neighbours)
         {
-            forAll(allDq[proci], j)
-            {
-                const labelPair id
-                (
-                    allIds[proci][2*j],
-                    allIds[proci][2*j + 1]
-                );
-                received(id) += allDq[proci][j];
-            }
+            UOPstream toProc(proci, pBufs);
+            toProc << sentIds[proci] << sentDq[proci];
         }
-        if (received.size())
+        pBufs.finishedSends();
+        for (const label proci : neighbours)
         {
-            for (parcelType& p : this->owner())
+            UIPstream fromProc(proci, pBufs);
+            const labelList ids(fromProc);
+            const scalarList dq(fromProc);
+            receive(ids, dq);
+        }
+    }
+    if (received.size())
+    {
+        for (parcelType& p : this->owner())
+        {
+            const auto iter =
+                received.cfind(labelPair(p.origProc(), p.origId()));
+            if (iter.found())
             {
-                const auto iter =
-                    received.cfind(labelPair(p.origProc(), p.origId()));
-                if (iter.found())
-                {
-                    p.q() -= iter.val();
-                }
+                p.q() -= iter.val();
             }
         }
     }
