@@ -8,8 +8,10 @@ Scene: a box of P unit cubes along x (P ranks, decomposition simple (P 1 1),
 10^3 cells per cube, walls), n parcels per cube at random positions with
 charges of both signs (1e-9 C scale), chargedParticleFoam without contact.
 Each rung runs S0 and S steps; per step = (tally(S) - tally(S0))/(S - S0),
-which removes the start-up (reading, decomposition) traffic. Peak memory is
-the resident high-water mark (VmHWM) of the S-step run.
+which removes the start-up (reading, decomposition) traffic. The parcels are
+injected in one serial step first and the parallel runs continue from the
+decomposed cloud (each rank reads its own parcels, as in a large run). Peak
+memory is the resident high-water mark (VmHWM) of the S-step run.
 
     commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
                   [--rungs cutoffCoulomb,directCoulomb,meshPoisson]
@@ -111,6 +113,28 @@ def make_case(case, P, n, rung, steps, seed=1):
     s = re.sub(r"^numberOfSubdomains .*?;", f"numberOfSubdomains {P};", s, flags=re.M)
     s = re.sub(r"n\s+\([^)]*\);", f"n ({P} 1 1);", s)
     open(p, "w").write(s)
+    inject_then_restart(case, steps)
+
+
+def inject_then_restart(case, steps):
+    """Inject the parcels in one serial step and continue from the written
+    cloud without the injection list: every rank reads only its own
+    parcels (decomposePar), as a large run does; explicitParcels would
+    have every rank parse and keep the whole list (O(N) memory per rank)"""
+    p = os.path.join(case, "system", "controlDict")
+    s0 = open(p).read()
+    s = re.sub(r"^endTime .*?;", "endTime 1e-7;", s0, flags=re.M)
+    s = re.sub(r"^writeInterval .*?;", "writeInterval 1;", s, flags=re.M)
+    open(p, "w").write(s)
+    sh("blockMesh", case, "log.blockMesh")
+    sh("chargedParticleFoam", case, "log.inject")
+    s = re.sub(r"^endTime .*?;", f"endTime {(1 + steps)*1e-7:.10g};", s0, flags=re.M)
+    s = re.sub(r"^startFrom .*?;", "startFrom latestTime;", s, flags=re.M)
+    open(p, "w").write(s)
+    p = os.path.join(case, "constant", "cloudProperties")
+    s = open(p).read()
+    s = re.sub(r"injectionModels\s*\{.*?\n    \}", "injectionModels\n    {\n    }", s, flags=re.S)
+    open(p, "w").write(s)
 
 
 def make_duct(case, P, n, steps):
@@ -145,7 +169,7 @@ def tally(case, P, lib, solver="chargedParticleFoam"):
         os.remove(out)
     sh("blockMesh", case, "log.blockMesh")
     env = f"-x LD_PRELOAD={lib} -x MPI_TALLY_FILE={out}"
-    sh("decomposePar -force", case, "log.decomposePar")
+    sh("decomposePar -force -latestTime", case, "log.decomposePar")
     sh(f"mpirun --oversubscribe -np {P} {env} {solver} -parallel", case, "log.solver")
     rows = {}
     for line in open(out):

@@ -1,7 +1,11 @@
 /* Latency and bandwidth between two MPI ranks (ping-pong): the machine
  * constants of the communication model in doc/benchmarks.md. Prints the
- * one-way time of each message size (median of the repeats) and the fitted
- * latency (smallest size) and bandwidth (largest size).
+ * one-way time of each message size (median of the repeats), the fitted
+ * latency (smallest size) and bandwidth (largest size), and the largest
+ * peak resident memory of the ranks after one all-to-all (what the MPI
+ * library itself holds per rank; run with more ranks to see it grow with
+ * the number of peers: ranks beyond the first two only take part in the
+ * all-to-all).
  *
  *   mpicc -O2 -o pingPong pingPong.c && mpirun -np 2 ./pingPong
  */
@@ -56,6 +60,36 @@ int main(int argc, char** argv)
         if (rank == 0)
         {
             printf("bytes %d one-way %.3e s\n", n, oneWay[s]);
+        }
+    }
+    {
+        /* Every pair connected once, as OpenFOAM's size exchanges do */
+        int nProcs = 1;
+        MPI_Comm_size(MPI_COMM_WORLD, &nProcs);
+        int* sendCounts = calloc(nProcs, sizeof(int));
+        int* recvCounts = calloc(nProcs, sizeof(int));
+        MPI_Alltoall(sendCounts, 1, MPI_INT, recvCounts, 1, MPI_INT, MPI_COMM_WORLD);
+        free(sendCounts);
+        free(recvCounts);
+        long peak = 0;
+        char line[256];
+        FILE* status = fopen("/proc/self/status", "r");
+        while (status && fgets(line, sizeof(line), status))
+        {
+            if (strncmp(line, "VmHWM:", 6) == 0)
+            {
+                peak = atol(line + 6);
+            }
+        }
+        if (status)
+        {
+            fclose(status);
+        }
+        long peakMax = 0;
+        MPI_Reduce(&peak, &peakMax, 1, MPI_LONG, MPI_MAX, 0, MPI_COMM_WORLD);
+        if (rank == 0)
+        {
+            printf("ranks %d peak memory per rank %.1f MB (largest)\n", nProcs, peakMax/1024.0);
         }
     }
     if (rank == 0)
