@@ -5,7 +5,7 @@
 #include "processorHalo.H"
 #include "polyMesh.H"
 #include "Pstream.H"
-#include "PstreamBuffers.H"
+#include "UIndirectList.H"
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
@@ -74,9 +74,18 @@ Foam::processorHalo::processorHalo
         return false;
     };
 
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    // The counts first, between neighbours only (both sides know who
+    // they are: no all-to-all of sizes), then the points
+    const label nProcs = Pstream::nProcs();
+    List<labelList> sendCounts(nProcs), recvCounts;
+    labelList recvCountSizes(nProcs, 0);
+    List<pointField> sendPoints(nProcs), recvPoints;
     forAll(boxes, proci)
     {
+        if (sends(proci, me))
+        {
+            recvCountSizes[proci] = 1;
+        }
         if (!sends(me, proci))
         {
             continue;
@@ -95,23 +104,31 @@ Foam::processorHalo::processorHalo
             }
         }
         send_[proci].transfer(idx);
-        UOPstream toProc(proci, pBufs);
-        toProc << pointField(UIndirectList<point>(x, send_[proci]));
+        sendCounts[proci] = labelList(1, send_[proci].size());
+        sendPoints[proci] = pointField(UIndirectList<point>(x, send_[proci]));
     }
-    pBufs.finishedSends();
+    Pstream::exchange<labelList, label>(sendCounts, recvCountSizes, recvCounts);
+
+    labelList recvSizes(nProcs, 0);
+    forAll(recvCounts, proci)
+    {
+        if (recvCountSizes[proci])
+        {
+            recvSizes[proci] = recvCounts[proci][0];
+        }
+    }
+    Pstream::exchange<pointField, point>(sendPoints, recvSizes, recvPoints);
 
     DynamicList<point> all(points_);
     forAll(boxes, proci)
     {
         recvStart_[proci] = all.size();
-        if (sends(proci, me))
+        if (recvSizes[proci])
         {
-            UIPstream fromProc(proci, pBufs);
-            const pointField xr(fromProc);
-            all.append(xr);
+            all.append(recvPoints[proci]);
         }
     }
-    recvStart_[Pstream::nProcs()] = all.size();
+    recvStart_[nProcs] = all.size();
     points_.transfer(all);
 }
 

@@ -4,7 +4,6 @@
 
 #include "processorHalo.H"
 #include "Pstream.H"
-#include "PstreamBuffers.H"
 #include "UIndirectList.H"
 
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
@@ -20,30 +19,26 @@ void Foam::processorHalo::gather(List<Type>& values) const
 template<class Type>
 void Foam::processorHalo::updateHalo(UList<Type>& values) const
 {
-    if (size() == nLocal_ && !Pstream::parRun())
+    if (!Pstream::parRun())
     {
         return;
     }
-    const label me = Pstream::myProcNo();
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    // The sizes are known on both sides (no all-to-all)
+    const label nProcs = Pstream::nProcs();
+    List<List<Type>> sendData(nProcs), recvData;
+    labelList recvSizes(nProcs, 0);
     forAll(send_, proci)
     {
-        if (send_[proci].size())
-        {
-            UOPstream toProc(proci, pBufs);
-            toProc << List<Type>(UIndirectList<Type>(values, send_[proci]));
-        }
+        sendData[proci] = UIndirectList<Type>(values, send_[proci]);
+        recvSizes[proci] = recvStart_[proci + 1] - recvStart_[proci];
     }
-    pBufs.finishedSends();
-    forAll(send_, proci)
+    Pstream::exchange<List<Type>, Type>(sendData, recvSizes, recvData);
+    forAll(recvData, proci)
     {
-        const label start = recvStart_[proci];
-        const label n = recvStart_[proci + 1] - start;
-        if (proci != me && n)
+        if (recvSizes[proci])
         {
-            UIPstream fromProc(proci, pBufs);
-            const List<Type> received(fromProc);
-            SubList<Type>(values, n, start) = received;
+            SubList<Type>(values, recvSizes[proci], recvStart_[proci]) =
+                recvData[proci];
         }
     }
 }
@@ -52,32 +47,27 @@ void Foam::processorHalo::updateHalo(UList<Type>& values) const
 template<class Type>
 void Foam::processorHalo::sumToOwners(UList<Type>& values) const
 {
-    if (size() == nLocal_ && !Pstream::parRun())
+    if (!Pstream::parRun())
     {
         return;
     }
-    const label me = Pstream::myProcNo();
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    const label nProcs = Pstream::nProcs();
+    List<List<Type>> sendData(nProcs), recvData;
+    labelList recvSizes(nProcs, 0);
     forAll(send_, proci)
     {
-        const label start = recvStart_[proci];
-        const label n = recvStart_[proci + 1] - start;
-        if (proci != me && n)
-        {
-            UOPstream toProc(proci, pBufs);
-            toProc << List<Type>(SubList<Type>(values, n, start));
-        }
+        const label n = recvStart_[proci + 1] - recvStart_[proci];
+        sendData[proci] = SubList<Type>(values, n, recvStart_[proci]);
+        recvSizes[proci] = send_[proci].size();
     }
-    pBufs.finishedSends();
-    forAll(send_, proci)
+    Pstream::exchange<List<Type>, Type>(sendData, recvSizes, recvData);
+    forAll(recvData, proci)
     {
-        if (send_[proci].size())
+        if (recvSizes[proci])
         {
-            UIPstream fromProc(proci, pBufs);
-            const List<Type> received(fromProc);
-            forAll(received, k)
+            forAll(send_[proci], k)
             {
-                values[send_[proci][k]] += received[k];
+                values[send_[proci][k]] += recvData[proci][k];
             }
         }
     }
