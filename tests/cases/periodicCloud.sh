@@ -2,7 +2,7 @@
 # 40 like-charged parcels in a 1 m box with cyclic patches in x, y and z.
 # The written forces fE of the p3m (default) and ewald kernels equal an
 # independent Ewald sum written here in numpy (tinfoil, neutralising
-# background); the 2-processor run gives the serial forces.
+# background); the 2-, 4- and 8-processor runs give the serial forces.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/p3m"
@@ -29,6 +29,8 @@ open(p, "w").write(s)
 PYEOF
 cp -r "$work/p3m" "$work/ewald"
 cp -r "$work/p3m" "$work/parallel"
+cp -r "$work/p3m" "$work/parallel4"
+cp -r "$work/p3m" "$work/parallel8"
 sed -i 's/method p3m; accuracy 1e-7;/method ewald;/' "$work/ewald/constant/cloudProperties"
 for c in p3m ewald
 do
@@ -41,6 +43,20 @@ run blockMesh blockMesh && run decomposePar decomposePar \
  && run solver mpirun -np 2 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \
     || fail "periodicCloud.parallel (run failed, see $work/parallel)"
+# 4 processors, 2 x 2 across the cyclic directions
+cd "$work/parallel4" || exit 1
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 4 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "periodicCloud.parallel4 (run failed, see $work/parallel4)"
+# 8 processors, 2 x 2 x 2: every cyclic direction split
+cd "$work/parallel8" || exit 1
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 8;/; s/n +\(2 1 1\);/n (2 2 2);/' system/decomposeParDict
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 8 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "periodicCloud.parallel8 (run failed, see $work/parallel8)"
 
 $PY - "$work" "$top/etc/python" <<'PYEOF'
 import math, sys
@@ -86,7 +102,7 @@ def load(case):
     t = max((d for d in os.listdir(case) if d.replace(".", "").replace("e-", "").isdigit() and d != "0"), key=float)
     d = f"{case}/{t}/lagrangian/cloud"
     return read_positions(d + "/positions"), read_field(d + "/fE").reshape(-1, 3)
-for name in ("p3m", "ewald", "parallel"):
+for name in ("p3m", "ewald", "parallel", "parallel4", "parallel8"):
     x, f = load(f"{work}/{name}")
     # match parcels by position (wrapped into the box)
     idx = [np.argmin(np.linalg.norm(((x0 - xi + 0.5*L) % L) - 0.5*L, axis=1)) for xi in x]

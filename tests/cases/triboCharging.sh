@@ -4,7 +4,7 @@
 # to round-off at every step (serial and 2 processors, where contacts across
 # the processor boundary are charged on both sides); contacts did charge;
 # a restart (charges, contact areas and fields read back) continues the run
-# exactly; the 2- and 4-processor runs reproduce the serial one.
+# exactly; the 2-, 4- and 8-processor runs reproduce the serial one.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase ellipsoidPour "$work/serial"
@@ -34,6 +34,7 @@ setWriteInterval 200
 cp -r "$work/serial" "$work/restarted"
 cp -r "$work/serial" "$work/parallel"
 cp -r "$work/serial" "$work/parallel4"
+cp -r "$work/serial" "$work/parallel8"
 
 run blockMesh blockMesh && run solver chargedParticleFoam \
     || fail "triboCharging.serialRun (solver failed)"
@@ -97,3 +98,16 @@ run reconstructPar reconstructPar || fail "triboCharging.parallel4 (reconstructP
 $PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel4/0.04" \
     --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel4
 balance "$work/parallel4" parallel4
+
+# 8 processors (2 x 2 x 2)
+cd "$work/parallel8" || exit 1
+sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 8;/; s/n +\(2 1 1\);/n (2 2 2);/' system/decomposeParDict
+run blockMesh blockMesh
+run decomposePar decomposePar || fail "triboCharging.parallel8 (decomposePar)"
+setEndTime 0.04
+run solver mpirun -np 8 chargedParticleFoam -parallel \
+    || fail "triboCharging.parallel8 (mpirun failed)"
+run reconstructPar reconstructPar || fail "triboCharging.parallel8 (reconstructPar)"
+$PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel8/0.04" \
+    --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel8
+balance "$work/parallel8" parallel8
