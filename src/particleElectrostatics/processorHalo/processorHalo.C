@@ -74,22 +74,18 @@ Foam::processorHalo::processorHalo
         return false;
     };
 
-    // The counts first, between neighbours only (both sides know who
-    // they are: no all-to-all of sizes), then the points
-    const label nProcs = Pstream::nProcs();
-    List<labelList> sendCounts(nProcs), recvCounts;
-    labelList recvCountSizes(nProcs, 0);
-    List<pointField> sendPoints(nProcs), recvPoints;
+    // The points, with their counts between the neighbours only (both
+    // sides know who they are: sends() is symmetric, the shifts coming
+    // in pairs)
+    DynamicList<label> neighbours;
+    List<List<point>> sendPoints(Pstream::nProcs()), recvPoints;
     forAll(boxes, proci)
     {
-        if (sends(proci, me))
-        {
-            recvCountSizes[proci] = 1;
-        }
         if (!sends(me, proci))
         {
             continue;
         }
+        neighbours.append(proci);
         const boundBox g(grown(proci));
         DynamicList<label> idx;
         forAll(x, i)
@@ -104,31 +100,17 @@ Foam::processorHalo::processorHalo
             }
         }
         send_[proci].transfer(idx);
-        sendCounts[proci] = labelList(1, send_[proci].size());
-        sendPoints[proci] = pointField(UIndirectList<point>(x, send_[proci]));
+        sendPoints[proci] = UIndirectList<point>(x, send_[proci]);
     }
-    Pstream::exchange<labelList, label>(sendCounts, recvCountSizes, recvCounts);
-
-    labelList recvSizes(nProcs, 0);
-    forAll(recvCounts, proci)
-    {
-        if (recvCountSizes[proci])
-        {
-            recvSizes[proci] = recvCounts[proci][0];
-        }
-    }
-    Pstream::exchange<pointField, point>(sendPoints, recvSizes, recvPoints);
+    exchangeWithNeighbours<point>(neighbours, sendPoints, recvPoints);
 
     DynamicList<point> all(points_);
     forAll(boxes, proci)
     {
         recvStart_[proci] = all.size();
-        if (recvSizes[proci])
-        {
-            all.append(recvPoints[proci]);
-        }
+        all.append(recvPoints[proci]);
     }
-    recvStart_[nProcs] = all.size();
+    recvStart_[Pstream::nProcs()] = all.size();
     points_.transfer(all);
 }
 

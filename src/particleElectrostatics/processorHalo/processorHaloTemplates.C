@@ -6,6 +6,41 @@
 #include "Pstream.H"
 #include "UIndirectList.H"
 
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+template<class Type>
+void Foam::processorHalo::exchangeWithNeighbours
+(
+    const labelUList& neighbours,
+    const UList<List<Type>>& sendData,
+    List<List<Type>>& recvData
+)
+{
+    const label nProcs = Pstream::nProcs();
+    recvData.setSize(nProcs);
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+    List<labelList> sendCounts(nProcs), recvCounts;
+    labelList countSizes(nProcs, 0);
+    List<List<Type>> toSend(nProcs);
+    for (const label proci : neighbours)
+    {
+        sendCounts[proci] = labelList(1, sendData[proci].size());
+        countSizes[proci] = 1;
+        toSend[proci] = sendData[proci];
+    }
+    Pstream::exchange<labelList, label>(sendCounts, countSizes, recvCounts);
+    labelList recvSizes(nProcs, 0);
+    for (const label proci : neighbours)
+    {
+        recvSizes[proci] = recvCounts[proci][0];
+    }
+    Pstream::exchange<List<Type>, Type>(toSend, recvSizes, recvData);
+}
+
+
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class Type>

@@ -6,7 +6,7 @@
 #include "ellipsoid.H"
 #include "wallPolyPatch.H"
 #include "mathematicalConstants.H"
-#include "PstreamBuffers.H"
+#include "processorHalo.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -324,7 +324,7 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     // bit (the two sides' contact geometries differ at round-off). Both
     // sides still update their area records
     dq_.setSize(contacts.size());
-    List<DynamicList<label>> sentIds(Pstream::nProcs());
+    List<DynamicList<labelPair>> sentIds(Pstream::nProcs());
     List<DynamicList<scalar>> sentDq(Pstream::nProcs());
     forAll(contacts, k)
     {
@@ -340,8 +340,7 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
             if (lower)
             {
                 const label proci = c.referredFrom;
-                sentIds[proci].append(pB.origProc());
-                sentIds[proci].append(pB.origId());
+                sentIds[proci].append(labelPair(pB.origProc(), pB.origId()));
                 sentDq[proci].append(dq_[k]);
             }
             else
@@ -375,14 +374,16 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     }
 
     // The partners' shares, exchanged with the neighbours only (those
-    // that refer parcels here and receive this processor's)
+    // that refer parcels here and receive this processor's; counts and
+    // data between them, no all-to-all)
     const label me = Pstream::myProcNo();
     HashTable<scalar, labelPair, Hash<labelPair>> received;
-    const auto receive = [&](const labelList& ids, const scalarList& dq)
+    const auto receive =
+        [&](const UList<labelPair>& ids, const UList<scalar>& dq)
     {
         forAll(dq, j)
         {
-            received(labelPair(ids[2*j], ids[2*j + 1])) += dq[j];
+            received(ids[j]) += dq[j];
         }
     };
     receive(sentIds[me], sentDq[me]);
@@ -397,19 +398,18 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     }
     if (Pstream::parRun())
     {
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        List<List<labelPair>> idsOut(Pstream::nProcs()), idsIn;
+        List<List<scalar>> dqOut(Pstream::nProcs()), dqIn;
         for (const label proci : neighbours)
         {
-            UOPstream toProc(proci, pBufs);
-            toProc << sentIds[proci] << sentDq[proci];
+            idsOut[proci].transfer(sentIds[proci]);
+            dqOut[proci].transfer(sentDq[proci]);
         }
-        pBufs.finishedSends();
+        processorHalo::exchangeWithNeighbours(neighbours, idsOut, idsIn);
+        processorHalo::exchangeWithNeighbours(neighbours, dqOut, dqIn);
         for (const label proci : neighbours)
         {
-            UIPstream fromProc(proci, pBufs);
-            const labelList ids(fromProc);
-            const scalarList dq(fromProc);
-            receive(ids, dq);
+            receive(idsIn[proci], dqIn[proci]);
         }
     }
     if (received.size())
