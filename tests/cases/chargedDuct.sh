@@ -14,10 +14,10 @@ do
     sed -i 's/balanceInterval 50;/balanceInterval 5;/' constant/cloudProperties
     if [ "$mode" = parallel4 ]
     then
-        sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(1 1 2\);/n (1 2 2);/' system/decomposeParDict
+        setDecomposition 4 "1 2 2"
     elif [ "$mode" = parallel8 ]
     then
-        sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 8;/; s/n +\(1 1 2\);/n (2 2 2);/' system/decomposeParDict
+        setDecomposition 8 "2 2 2"
     fi
     if [ "$mode" = serial ]
     then

@@ -50,7 +50,7 @@ run blockMesh blockMesh && run decomposePar decomposePar \
  && run reconstructPar reconstructPar -latestTime \
     || fail "cutoffCloud.parallel (run failed, see $work/parallel)"
 cd "$work/parallel4" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (4 1 1);/' system/decomposeParDict
+setDecomposition 4 "4 1 1"
 run blockMesh blockMesh && run decomposePar decomposePar \
  && run solver mpirun -np 4 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \

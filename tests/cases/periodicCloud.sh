@@ -38,25 +38,19 @@ do
     run blockMesh blockMesh && run solver chargedParticleFoam \
         || fail "periodicCloud.$c (solver failed, see $work/$c/log.solver)"
 done
-cd "$work/parallel" || exit 1
-run blockMesh blockMesh && run decomposePar decomposePar \
- && run solver mpirun -np 2 chargedParticleFoam -parallel \
- && run reconstructPar reconstructPar -latestTime \
-    || fail "periodicCloud.parallel (run failed, see $work/parallel)"
-# 4 processors, 2 x 2 across the cyclic directions
-cd "$work/parallel4" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
-run blockMesh blockMesh && run decomposePar decomposePar \
- && run solver mpirun -np 4 chargedParticleFoam -parallel \
- && run reconstructPar reconstructPar -latestTime \
-    || fail "periodicCloud.parallel4 (run failed, see $work/parallel4)"
-# 8 processors, 2 x 2 x 2: every cyclic direction split
-cd "$work/parallel8" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 8;/; s/n +\(2 1 1\);/n (2 2 2);/' system/decomposeParDict
-run blockMesh blockMesh && run decomposePar decomposePar \
- && run solver mpirun -np 8 chargedParticleFoam -parallel \
- && run reconstructPar reconstructPar -latestTime \
-    || fail "periodicCloud.parallel8 (run failed, see $work/parallel8)"
+# 2, 4 and 8 processors: the cyclic directions split one, two and three
+# times
+for split in "2:2 1 1" "4:2 2 1" "8:2 2 2"
+do
+    np=${split%%:*}
+    case=parallel; [ "$np" = 2 ] || case=parallel$np
+    cd "$work/$case" || exit 1
+    setDecomposition "$np" "${split#*:}"
+    run blockMesh blockMesh && run decomposePar decomposePar \
+     && run solver mpirun -np "$np" chargedParticleFoam -parallel \
+     && run reconstructPar reconstructPar -latestTime \
+        || fail "periodicCloud.$case (run failed, see $work/$case)"
+done
 
 $PY - "$work" "$top/etc/python" <<'PYEOF'
 import math, sys

@@ -85,29 +85,20 @@ $PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel/0.04" \
     --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel
 balance "$work/parallel" parallel
 
-# 4 processors (2 x 2 across the box): contacts across each processor
-# boundary charge the partner through its processor only
-cd "$work/parallel4" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 4;/; s/n +\(2 1 1\);/n (2 2 1);/' system/decomposeParDict
-run blockMesh blockMesh
-run decomposePar decomposePar || fail "triboCharging.parallel4 (decomposePar)"
-setEndTime 0.04
-run solver mpirun -np 4 chargedParticleFoam -parallel \
-    || fail "triboCharging.parallel4 (mpirun failed)"
-run reconstructPar reconstructPar || fail "triboCharging.parallel4 (reconstructPar)"
-$PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel4/0.04" \
-    --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel4
-balance "$work/parallel4" parallel4
-
-# 8 processors (2 x 2 x 2)
-cd "$work/parallel8" || exit 1
-sed -i -E 's/^numberOfSubdomains .*/numberOfSubdomains 8;/; s/n +\(2 1 1\);/n (2 2 2);/' system/decomposeParDict
-run blockMesh blockMesh
-run decomposePar decomposePar || fail "triboCharging.parallel8 (decomposePar)"
-setEndTime 0.04
-run solver mpirun -np 8 chargedParticleFoam -parallel \
-    || fail "triboCharging.parallel8 (mpirun failed)"
-run reconstructPar reconstructPar || fail "triboCharging.parallel8 (reconstructPar)"
-$PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel8/0.04" \
-    --tol 1e-10 --qtol 1e-10 --name triboCharging.parallel8
-balance "$work/parallel8" parallel8
+# 4 and 8 processors (2 x 2 across the box, 2 x 2 x 2): contacts across
+# each processor boundary charge the partner through its processor only
+for split in "4:2 2 1" "8:2 2 2"
+do
+    np=${split%%:*}
+    cd "$work/parallel$np" || exit 1
+    setDecomposition "$np" "${split#*:}"
+    run blockMesh blockMesh
+    run decomposePar decomposePar || fail "triboCharging.parallel$np (decomposePar)"
+    setEndTime 0.04
+    run solver mpirun -np "$np" chargedParticleFoam -parallel \
+        || fail "triboCharging.parallel$np (mpirun failed)"
+    run reconstructPar reconstructPar || fail "triboCharging.parallel$np (reconstructPar)"
+    $PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel$np/0.04" \
+        --tol 1e-10 --qtol 1e-10 --name "triboCharging.parallel$np"
+    balance "$work/parallel$np" "parallel$np"
+done
