@@ -69,8 +69,9 @@ METHODS = (
     'getModelProperty',
 )
 
-# Receivers that are not dictionaries (argList: command-line options)
-NOT_DICTIONARIES = {'args', 'selfFieldSamplingTypeNames'}
+# Receivers that are not dictionaries (argList: command-line options;
+# neighbours: a list of processors)
+NOT_DICTIONARIES = {'args', 'selfFieldSamplingTypeNames', 'neighbours'}
 
 # Project helpers that read the entries named by their literal arguments
 HELPERS = (
