@@ -204,11 +204,11 @@ def main():
         os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     S0, S = (int(v) for v in a.steps.split(","))
     ranks = [int(v) for v in a.ranks.split(",")]
-    print(f"per step from {S - S0} steps ({S} minus {S0}); peak memory of the {S}-step run; "
-          f"the rungs under weak scaling: {a.n} parcels and 1000 cells per rank")
+    print(f"per step from {S - S0} steps ({S} minus {S0}); peak memory of the {S}-step run")
     for rung in a.rungs.split(","):
         duct = rung == "shortDuct"
-        print(f"\n{rung}" + (f" (strong scaling: {a.n} parcels in all, per fluid step)" if duct else ""))
+        print(f"\n{rung}" + (f" (strong scaling: {a.n} parcels in all, per fluid step)" if duct
+                              else f" (weak scaling: {a.n} parcels and 1000 cells per rank)"))
         print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | all-reduces/step | all-to-alls/step | peak memory per rank [MB] (max) |")
         print("| --- | --- | --- | --- | --- | --- | --- |")
         perRank = {}
@@ -238,7 +238,8 @@ def main():
                              f"CPU s per parcel and fluid step")
             perRank[P] = b.mean()
             print(f"| {P} | {b.mean():.3g} | {b.max():.3g} | {m.mean():.3g} | {ar:.3g} | {aa:.3g} | {mem:.0f} |", flush=True)
-        print("\n".join(notes))
+        for note in notes:
+            print(note)
         big = max(ranks)
         if 2 in perRank and perRank[2] > 0 and big > 2:
             print(f"bytes per rank and step, {big} ranks / 2 ranks: {perRank[big]/perRank[2]:.2f}")

@@ -13,9 +13,11 @@ ExecutionTime).
 Per rank and fluid step, with n = N/P parcels per rank (cells in
 proportion, subdomains as cubes, 26 neighbours of which 6 share faces):
     compute    n c
-    halo       M (26/2) alpha + B (n/n_m)^(2/3) (6/2)/beta   (M, B: the
-               largest rank's messages and bytes at the largest measured P,
-               n_m parcels per rank there, 2 neighbours in a row of slabs)
+    halo       M (26/2) alpha + B (n/n_m)^(2/3) (6/2)/beta   (M: the
+               point-to-point messages per rank, the tally's messages less
+               its collective calls; B: the largest rank's bytes; both at
+               the largest measured P, n_m parcels per rank there, 2
+               neighbours in a row of slabs)
     all-reduce A 2 log2(P) alpha                 (recursive doubling)
     all-to-all X (P - 1) alpha                   (pairwise exchange of the
                sizes that OpenFOAM's PstreamBuffers sends before data; a
@@ -35,11 +37,11 @@ def parse_tables(path):
     messages, all-reduces, all-to-alls, memory; and the header's n"""
     rungs, rung, n, compute = {}, None, {}, {}
     for line in open(path):
-        m = re.match(r"^(\w+)( \(strong scaling: (\d+) parcels.*\))?\s*$", line)
+        m = re.match(r"^(\w+)( \((strong|weak) scaling: (\d+) parcels.*\))?\s*$", line)
         if m:
             rung = m.group(1)
             rungs[rung] = {}
-            n[rung] = int(m.group(3)) if m.group(3) else None
+            n[rung] = int(m.group(4)) if m.group(3) == "strong" else None
             continue
         m = re.match(r"^compute at (\d+) ranks: ([0-9.e+-]+)", line)
         if m and rung:
@@ -80,11 +82,13 @@ def main():
     duct = rungs["shortDuct"]
     Pm = max(duct)
     bytesMean, bytesMax, msgs, allreduce, alltoall, mem = duct[Pm]
+    # The tally counts each collective call as a message too
+    msgs -= allreduce + alltoall
     nm = nOf["shortDuct"]/Pm
     N = a.parcels
     c = a.compute or computeOf["shortDuct"][min(computeOf["shortDuct"])]
     print(f"measured: latency {alpha:.2e} s, bandwidth {beta:.2e} B/s; duct at {Pm} ranks "
-          f"({nm:.0f} parcels per rank): {msgs:.0f} messages, {bytesMax:.3g} bytes (largest rank), "
+          f"({nm:.0f} parcels per rank): {msgs:.0f} point-to-point messages, {bytesMax:.3g} bytes (largest rank), "
           f"{allreduce:.0f} all-reduces, {alltoall:.0f} all-to-alls per rank and fluid step; "
           f"compute {c:.2e} s per parcel and fluid step")
     print(f"\nmodel: {N:.0e} parcels, seconds per rank and fluid step")
