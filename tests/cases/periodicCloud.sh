@@ -2,7 +2,8 @@
 # 40 like-charged parcels in a 1 m box with cyclic patches in x, y and z.
 # The written forces fE of the p3m (default) and ewald kernels equal an
 # independent Ewald sum written here in numpy (tinfoil, neutralising
-# background); the 2-, 4- and 8-processor runs give the serial forces.
+# background); the 2-, 4- and 8-processor runs (p3m: a halo and a mesh
+# distributed in slabs, nothing gathered) give the serial forces.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/p3m"
@@ -51,6 +52,77 @@ do
      && run reconstructPar reconstructPar -latestTime \
         || fail "periodicCloud.$case (run failed, see $work/$case)"
 done
+
+# Dipoles across the periodic faces: six pairs of charged dielectric
+# spheres (epsilonR 10, gap 0.01 m at 0.04 m apart) that face each other
+# through the x, y and z faces, p3m + the inducedDipole near field: serial
+# against 8 processors (2 x 2 x 2), where every pair is split between
+# processors through a periodic translation (the dipoles' halo and the
+# CG's sums over the processors)
+copyCase twoChargedSpheres "$work/dipoles"
+cd "$work/dipoles" || exit 1
+$PY "$tools/unitBoxMesh.py" cyclic
+$PY - <<'PYEOF'
+import re
+# (position a, position b) facing each other through a periodic face
+pairs = []
+for k, (y, z) in enumerate([(0.3, 0.6), (0.7, 0.2)]):
+    pairs.append(((0.02, y, z), (0.98, y, z)))
+    pairs.append(((y, 0.02, z), (y, 0.98, z)))
+    pairs.append(((y, z, 0.02), (y, z, 0.98)))
+parcels = []
+for i, (a, b) in enumerate(pairs):
+    for j, x in enumerate((a, b)):
+        q = (1 if (i + j) % 3 else -1)*(0.5 + 0.1*i)*1e-9
+        parcels.append("{ position (%g %g %g); d 0.03; rho 1000; epsilonR 10; q %.6e; }"
+                       % (x + (q,)))
+p = "constant/cloudProperties"
+s = open(p).read()
+s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n                "
+           + "\n                ".join(parcels) + "\n            );", s, flags=re.S)
+s = re.sub(r"electrostaticsModel\s+\w+;", "electrostaticsModel periodic;\n    periodicCoeffs"
+           " { method p3m; accuracy 1e-7; nearField { type inducedDipole; } }", s)
+open(p, "w").write(s)
+p = "system/controlDict"
+s = open(p).read()
+s = re.sub(r"^endTime .*?;", "endTime 1e-6;", s, flags=re.M)
+s = re.sub(r"^deltaT .*?;", "deltaT 1e-6;", s, flags=re.M)
+s = re.sub(r"^writeInterval .*?;", "writeInterval 1;", s, flags=re.M)
+open(p, "w").write(s)
+PYEOF
+cp -r "$work/dipoles" "$work/dipoles8"
+run blockMesh blockMesh && run solver chargedParticleFoam \
+    || fail "periodicCloud.dipoles (solver failed, see $work/dipoles/log.solver)"
+cd "$work/dipoles8" || exit 1
+setDecomposition 8 "2 2 2"
+run blockMesh blockMesh && run decomposePar decomposePar \
+ && run solver mpirun -np 8 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "periodicCloud.dipoles8 (run failed, see $work/dipoles8)"
+$PY - "$work" "$top/etc/python" <<'PYEOF'
+import sys
+import numpy as np
+work = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+from foamLagrangian import read_field, read_positions
+def load(case):
+    d = f"{case}/1e-06/lagrangian/cloud"
+    return (read_positions(d + "/positions"), read_field(d + "/dipole").reshape(-1, 3),
+            read_field(d + "/fE").reshape(-1, 3))
+xs, ps, fs = load(work + "/dipoles")
+xp, pp, fp = load(work + "/dipoles8")
+idx = [int(np.argmin(np.linalg.norm(xs - x, axis=1))) for x in xp]
+dp = np.abs(pp - ps[idx]).max()/np.abs(ps).max()
+df = np.abs(fp - fs[idx]).max()/np.abs(fs).max()
+ok = len(set(idx)) == len(xs) == 12 and dp < 1e-10 and df < 1e-10
+print(f"{'PASS' if ok else 'FAIL'}: periodicCloud.dipoles8 (8 processors vs serial, 12 dielectric "
+      f"parcels in pairs through the periodic faces: dipoles {dp:.1e}, forces {df:.1e} of the "
+      f"largest, tol 1e-10)")
+PYEOF
+grep -Eq "Induced dipoles += 12 polarisable, 6 pairs" "$work/dipoles/log.solver" \
+ && grep -Eq "Induced dipoles += 12 polarisable, 6 pairs" "$work/dipoles8/log.solver" \
+    && pass "periodicCloud.dipoles.pairs (serial and 8 processors find the 6 pairs through the faces)" \
+    || fail "periodicCloud.dipoles.pairs (the logs do not show 6 pairs within rNear, see $work/dipoles*/log.solver)"
 
 $PY - "$work" "$top/etc/python" <<'PYEOF'
 import math, sys
@@ -106,4 +178,13 @@ for name in ("p3m", "ewald", "parallel", "parallel4", "parallel8"):
     ok = len(set(idx)) == len(x0) and err < tol
     print(f"{'PASS' if ok else 'FAIL'}: periodicCloud.{name} (rms force error vs an independent "
           f"Ewald sum {err:.1e} of the rms force, tol {tol:g}; {len(x)} parcels)")
+    if name == "p3m":
+        serial = dict(zip(map(int, idx), f))
+    elif name.startswith("parallel"):
+        # The distributed mesh and the halo give the serial P3M forces
+        # (same parameters) to round-off
+        diff = max(np.linalg.norm(fi - serial[int(i)]) for i, fi in zip(idx, f))
+        rel = diff/max(np.linalg.norm(v) for v in serial.values())
+        print(f"{'PASS' if rel < 1e-12 else 'FAIL'}: periodicCloud.{name}.serial (largest force "
+              f"difference from the serial P3M run {rel:.1e} of the largest force, tol 1e-12)")
 PYEOF

@@ -5,7 +5,7 @@ PMPI shim), under weak scaling: each rank holds the same number of parcels
 and cells.
 
 Scene: a box of P unit cubes along x (P ranks, decomposition simple (P 1 1),
-10^3 cells per cube, walls), n parcels per cube at random positions with
+10^3 cells per cube, walls; cyclic in x, y and z for the periodic rung), n parcels per cube at random positions with
 charges of both signs (1e-9 C scale), chargedParticleFoam without contact.
 Each rung runs S0 and S steps; per step = (tally(S) - tally(S0))/(S - S0),
 which removes the start-up (reading, decomposition) traffic. The parcels are
@@ -14,7 +14,7 @@ decomposed cloud (each rank reads its own parcels, as in a large run). Peak
 memory is the resident high-water mark (VmHWM) of the S-step run.
 
     commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
-                  [--rungs cutoffCoulomb,directCoulomb,meshPoisson]
+                  [--rungs cutoffCoulomb,directCoulomb,meshPoisson,periodic,inducedDipole]
                   [--work /tmp/commVolume]
     commVolume.py --pingpong    (latency and bandwidth between 2 ranks)
     commVolume.py --rungs shortDuct --n 400 --ranks 2,4,8
@@ -44,6 +44,13 @@ RUNGS = {
     "cutoffCoulomb": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; }",
     "directCoulomb": "electrostaticsModel directCoulomb;",
     "meshPoisson": "electrostaticsModel meshPoisson;\n    meshPoissonCoeffs { radius 0.25; }",
+    # Tri-periodic box (cyclic patches instead of walls), P3M at its default
+    # accuracy: a halo of rCut and the mesh in slabs of x-planes
+    "periodic": "electrostaticsModel periodic;\n    periodicCoeffs { method p3m; }",
+    # Dielectric parcels (epsilonR 4): the cutoff sum and the induced
+    # dipoles within rNear (a halo and a distributed CG)
+    "inducedDipole": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
+                     "nearField { type inducedDipole; rNear 0.05; } }",
 }
 
 
@@ -70,8 +77,14 @@ def make_case(case, P, n, rung, steps, seed=1):
 );""", s, flags=re.S)
     s = re.sub(r"blocks\s*\(.*?\);", f"blocks\n(\n    hex (0 1 2 3 4 5 6 7) ({10*P} 10 10) simpleGrading (1 1 1)\n);",
                s, flags=re.S)
-    s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }\n);",
-               s, flags=re.S)
+    if rung == "periodic":
+        pairs = [("x", "(0 4 7 3)", "(1 2 6 5)"), ("y", "(0 1 5 4)", "(3 7 6 2)"), ("z", "(0 3 2 1)", "(4 5 6 7)")]
+        patches = "".join(f"    {d}0 {{ type cyclic; neighbourPatch {d}1; faces ({a}); }}\n"
+                          f"    {d}1 {{ type cyclic; neighbourPatch {d}0; faces ({b}); }}\n" for d, a, b in pairs)
+        s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n" + patches + ");", s, flags=re.S)
+    else:
+        s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }\n);",
+                   s, flags=re.S)
     open(p, "w").write(s)
     # Parcels and the rung
     rng = np.random.default_rng(seed)
@@ -79,8 +92,9 @@ def make_case(case, P, n, rung, steps, seed=1):
     q = 1e-9*(2*rng.random(n*P) - 1)
     p = os.path.join(case, "constant", "cloudProperties")
     s = open(p).read()
-    parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000; q %.9g; }"
-                        % (r[0], r[1], r[2], c) for r, c in zip(x, q))
+    eps = " epsilonR 4;" if rung == "inducedDipole" else ""
+    parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000;%s q %.9g; }"
+                        % (r[0], r[1], r[2], eps, c) for r, c in zip(x, q))
     s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
     s = re.sub(r"electrostaticsModel\s+\w+;", RUNGS[rung], s)
     # No per-step parcel history (it gathers every parcel on the master)

@@ -4,9 +4,9 @@
     MPI traffic and peak memory of each rank of a run, measured in the
     process: a PMPI shim (the MPI standard's profiling interface) loaded
     with LD_PRELOAD counts the messages and bytes each rank sends through
-    the calls OpenFOAM's Pstream uses (Send, Bsend, Ssend, Isend, and the
-    collectives Allreduce, Alltoall, Alltoallv, Gatherv, Scatterv: a rank's
-    own contribution), and at MPI_Finalize appends one line per rank to the
+    the calls OpenFOAM's Pstream and FFTW's MPI transposes use (Send, Bsend,
+    Ssend, Isend, Sendrecv, and the collectives Allreduce, Alltoall,
+    Alltoallv, Gatherv, Scatterv: a rank's own contribution), and at MPI_Finalize appends one line per rank to the
     file named by MPI_TALLY_FILE:
 
         rank <r> messages <n> bytes <b> peakRSS_kB <VmHWM>
@@ -92,6 +92,27 @@ int MPI_Allreduce
     tally(c, t);
     ++tallyAllreduce;
     return PMPI_Allreduce(s, r, c, t, o, m);
+}
+
+/* Pairwise exchanges (FFTW's MPI transposes between some numbers of ranks) */
+int MPI_Sendrecv
+(
+    const void* s, int sc, MPI_Datatype st, int d, int sg, void* r, int rc,
+    MPI_Datatype rt, int src, int rg, MPI_Comm m, MPI_Status* status
+)
+{
+    tally(sc, st);
+    return PMPI_Sendrecv(s, sc, st, d, sg, r, rc, rt, src, rg, m, status);
+}
+
+int MPI_Sendrecv_replace
+(
+    void* b, int c, MPI_Datatype t, int d, int sg, int src, int rg,
+    MPI_Comm m, MPI_Status* status
+)
+{
+    tally(c, t);
+    return PMPI_Sendrecv_replace(b, c, t, d, sg, src, rg, m, status);
 }
 
 int MPI_Alltoall

@@ -263,8 +263,13 @@ void Foam::inducedDipole::solveDipoles()
         }
     }
 
-    auto apply = [&](const List<vector>& v, List<vector>& Av)
+    const bool distributed = owned_.size() == n;
+    auto apply = [&](List<vector>& v, List<vector>& Av)
     {
+        if (distributed)
+        {
+            updateCopies_(v);
+        }
         forAll(v, i)
         {
             Av[i] = polar[i] ? (alphaInv[i] & v[i]) : vector::zero;
@@ -281,9 +286,12 @@ void Foam::inducedDipole::solveDipoles()
         scalar s = 0;
         forAll(a, i)
         {
-            s += a[i] & b[i];
+            if (!distributed || owned_[i])
+            {
+                s += a[i] & b[i];
+            }
         }
-        return s;
+        return distributed ? sumOverProcessors_(s) : s;
     };
 
     DynamicList<vector>& b = b_;
@@ -367,6 +375,12 @@ void Foam::inducedDipole::solveDipoles()
         rz = rzNew;
         ++iterations_;
         residual_ = Foam::sqrt(max(rz, scalar(0))/bNorm);
+    }
+
+    if (distributed)
+    {
+        // The copies' dipoles from their owners (the outputs' pair terms)
+        updateCopies_(p_);
     }
 
     if (residual_ > tolerance_)
@@ -487,6 +501,19 @@ void Foam::inducedDipole::setPairWeights
 }
 
 
+void Foam::inducedDipole::setDistribution
+(
+    const boolList& owned,
+    const std::function<void(UList<vector>&)>& updateCopies,
+    const std::function<scalar(scalar)>& sumOverProcessors
+)
+{
+    owned_ = owned;
+    updateCopies_ = updateCopies;
+    sumOverProcessors_ = sumOverProcessors;
+}
+
+
 Foam::label Foam::inducedDipole::solve()
 {
     const label n = x_.size();
@@ -503,6 +530,12 @@ Foam::label Foam::inducedDipole::solve()
     {
         Ec[i] = E0_[i] + Eext_;
     }
+    // Distributed: a pair's energy is shared by its owned members' sides
+    const bool distributed = owned_.size() == n;
+    auto ownedShare = [&](const label i, const label j)
+    {
+        return distributed ? 0.5*(owned_[i] + owned_[j]) : scalar(1);
+    };
     scalar Uqq = 0;
     if (chargeFields_)
     {
@@ -513,7 +546,7 @@ Foam::label Foam::inducedDipole::solve()
             const vector kr = (k*ir*ir*ir)*ij.r;
             Ec[ij.i] += q_[ij.j]*kr;
             Ec[ij.j] -= q_[ij.i]*kr;
-            Uqq += k*q_[ij.i]*q_[ij.j]*ir;
+            Uqq += ownedShare(ij.i, ij.j)*k*q_[ij.i]*q_[ij.j]*ir;
         }
     }
 
@@ -589,8 +622,16 @@ Foam::label Foam::inducedDipole::solve()
         const vector E0 = E0_[i] + Eext_;
         F_[i] = q_[i]*E0 + dF_[i];
         M_[i] += p_[i] ^ E0;
-        energy_ -= 0.5*(p_[i] & (Ec[i] - E0));
-        externalEnergy_ -= 0.5*(p_[i] & E0);
+        if (!distributed || owned_[i])
+        {
+            energy_ -= 0.5*(p_[i] & (Ec[i] - E0));
+            externalEnergy_ -= 0.5*(p_[i] & E0);
+        }
+    }
+    if (distributed)
+    {
+        energy_ = sumOverProcessors_(energy_);
+        externalEnergy_ = sumOverProcessors_(externalEnergy_);
     }
 
     return iterations_;

@@ -7,8 +7,11 @@
 #include "error.H"
 #include "Switch.H"
 #include "OStringStream.H"
+#include "Pstream.H"
+#include "processorHalo.H"
 
-#include <fftw3.h>
+#include <mpi.h>
+#include <fftw3-mpi.h>
 #include <chrono>
 #include <algorithm>
 #include <array>
@@ -67,6 +70,35 @@ inline void bspline(const label P, const scalar t, scalar* w)
             const scalar a = (j < k - 1) ? w[j] : 0;
             const scalar b = (j > 0) ? w[j - 1] : 0;
             w[j] = ((t + j)*a + (k - t - j)*b)*div;
+        }
+    }
+}
+
+
+// Assignment stencil of a point x (wrapped into the box): per direction
+// the mesh indices idx[d][j] and weights w[d][j], j < P (hi: points per
+// metre, n: points per direction)
+inline void assignmentStencil
+(
+    const Foam::point& x,
+    const label P,
+    const scalar hi[3],
+    const label n[3],
+    label idx[3][7],
+    scalar w[3][7]
+)
+{
+    for (Foam::direction d = 0; d < 3; ++d)
+    {
+        const scalar u = x[d]*hi[d];
+        label m = label(std::floor(u));
+        const scalar t = u - m;
+        bspline(P, t, w[d]);
+        for (label j = 0; j < P; ++j)
+        {
+            label mj = (m - j) % n[d];
+            if (mj < 0) mj += n[d];
+            idx[d][j] = mj;
         }
     }
 }
@@ -168,6 +200,13 @@ Foam::p3m::p3m
     work_(nullptr),
     planForward_(nullptr),
     planBackward_{nullptr, nullptr, nullptr},
+    distributed_(false),
+    local0_(0),
+    localN0_(0),
+    local1_(0),
+    localN1_(0),
+    nLocal_(0),
+    nHalo_(0),
     timeReal_(0),
     timeKspace_(0)
 {
@@ -204,6 +243,13 @@ Foam::p3m::p3m(const dictionary& dict)
     work_(nullptr),
     planForward_(nullptr),
     planBackward_{nullptr, nullptr, nullptr},
+    distributed_(false),
+    local0_(0),
+    localN0_(0),
+    local1_(0),
+    localN1_(0),
+    nLocal_(0),
+    nHalo_(0),
     timeReal_(0),
     timeKspace_(0)
 {
@@ -317,10 +363,27 @@ void Foam::p3m::estimateError
 }
 
 
-void Foam::p3m::setup(const label N, const scalar Q2) const
+void Foam::p3m::setup
+(
+    const label N,
+    const scalar Q2,
+    const bool distributed
+) const
 {
     clear();
     tab_.clear();
+    chooseParameters(N, Q2);
+    allocateMesh(distributed);
+    influenceFunction();
+
+    N0_ = N;
+    Q20_ = Q2;
+    ready_ = true;
+}
+
+
+void Foam::p3m::chooseParameters(const label N, const scalar Q2) const
+{
 
     const scalar V = L_.x()*L_.y()*L_.z();
     const scalar n = N/V;
@@ -439,15 +502,92 @@ void Foam::p3m::setup(const label N, const scalar Q2) const
             << endl;
     }
 
+}
+
+
+void Foam::p3m::allocateMesh(const bool distributed) const
+{
     // FFTW arrays and plans; planning with MEASURE overwrites the arrays
     const label n0 = p_.mesh[0], n1 = p_.mesh[1], n2 = p_.mesh[2];
     const label nReal = n0*n1*n2;
     const label nCplx = n0*n1*(n2/2 + 1);
+    const unsigned flags = (nReal > 32768) ? FFTW_MEASURE : FFTW_ESTIMATE;
+
+    distributed_ = distributed;
+    if (distributed)
+    {
+        // Slabs of x-planes (real mesh) and y-planes (transposed
+        // transform: no transpose back, the influence function is applied
+        // in that order), padded real rows of 2 (n2/2 + 1) (FFTW MPI r2c)
+        static bool fftwMpiReady = false;
+        if (!fftwMpiReady)
+        {
+            fftw_mpi_init();
+            fftwMpiReady = true;
+        }
+        ptrdiff_t ln0, l0, ln1, l1;
+        const ptrdiff_t nLocal = fftw_mpi_local_size_3d_transposed
+        (
+            n0, n1, n2/2 + 1, MPI_COMM_WORLD, &ln0, &l0, &ln1, &l1
+        );
+        local0_ = l0;
+        localN0_ = ln0;
+        local1_ = l1;
+        localN1_ = ln1;
+
+        labelList starts(Pstream::nProcs(), 0), counts(Pstream::nProcs(), 0);
+        starts[Pstream::myProcNo()] = local0_;
+        counts[Pstream::myProcNo()] = localN0_;
+        Pstream::listCombineGather(starts, plusEqOp<label>());
+        Pstream::listCombineScatter(starts);
+        Pstream::listCombineGather(counts, plusEqOp<label>());
+        Pstream::listCombineScatter(counts);
+        planeOwner_.setSize(n0);
+        forAll(starts, proci)
+        {
+            for (label i = 0; i < counts[proci]; ++i)
+            {
+                planeOwner_[starts[proci] + i] = proci;
+            }
+        }
+
+        // FFTW_ESTIMATE: MEASURE's trial transforms are collectives whose
+        // choice depends on timing, so the plan (round-off) and the
+        // traffic would differ from run to run
+        const unsigned mpiFlags = FFTW_ESTIMATE;
+        const size_t nAlloc = std::max(ptrdiff_t(1), nLocal);
+        rho_ = fftw_alloc_real(2*nAlloc);
+        for (direction d = 0; d < 3; ++d)
+        {
+            Efield_[d] = fftw_alloc_real(2*nAlloc);
+        }
+        rhoHat_ = fftw_alloc_complex(nAlloc);
+        work_ = fftw_alloc_complex(nAlloc);
+        planForward_ = fftw_mpi_plan_dft_r2c_3d
+        (
+            n0, n1, n2, rho_, static_cast<fftw_complex*>(rhoHat_),
+            MPI_COMM_WORLD, mpiFlags | FFTW_MPI_TRANSPOSED_OUT
+        );
+        for (direction d = 0; d < 3; ++d)
+        {
+            planBackward_[d] = fftw_mpi_plan_dft_c2r_3d
+            (
+                n0, n1, n2, static_cast<fftw_complex*>(work_), Efield_[d],
+                MPI_COMM_WORLD,
+                mpiFlags | FFTW_DESTROY_INPUT | FFTW_MPI_TRANSPOSED_IN
+            );
+        }
+        return;
+    }
+
+    local0_ = 0;
+    localN0_ = n0;
+    local1_ = 0;
+    localN1_ = n1;
     rho_ = fftw_alloc_real(nReal);
     for (direction d = 0; d < 3; ++d) Efield_[d] = fftw_alloc_real(nReal);
     rhoHat_ = fftw_alloc_complex(nCplx);
     work_ = fftw_alloc_complex(nCplx);
-    const unsigned flags = (nReal > 32768) ? FFTW_MEASURE : FFTW_ESTIMATE;
     planForward_ = fftw_plan_dft_r2c_3d
     (
         n0, n1, n2, rho_, static_cast<fftw_complex*>(rhoHat_), flags
@@ -460,12 +600,6 @@ void Foam::p3m::setup(const label N, const scalar Q2) const
             flags | FFTW_DESTROY_INPUT
         );
     }
-
-    influenceFunction();
-
-    N0_ = N;
-    Q20_ = Q2;
-    ready_ = true;
 }
 
 
@@ -527,8 +661,11 @@ void Foam::p3m::influenceFunction() const
         }
     }
 
+    // Serial: all of it, (i0, i1, i2) order; distributed: this
+    // processor's y-planes, (i1, i0, i2) order (transposed transform)
     const label n2c = n[2]/2 + 1;
-    G_.assign(n[0]*n[1]*n2c, 0);
+    const label i1Begin = local1_, i1End = local1_ + localN1_;
+    G_.assign((i1End - i1Begin)*n[0]*n2c, 0);
     kx_ = kd[0];
     ky_ = kd[1];
     kz_ = kd[2];
@@ -536,7 +673,7 @@ void Foam::p3m::influenceFunction() const
 
     for (label i0 = 0; i0 < n[0]; ++i0)
     {
-        for (label i1 = 0; i1 < n[1]; ++i1)
+        for (label i1 = i1Begin; i1 < i1End; ++i1)
         {
             for (label i2 = 0; i2 < n2c; ++i2)
             {
@@ -565,7 +702,11 @@ void Foam::p3m::influenceFunction() const
                     }
                 }
                 const scalar D = den[0][i0]*den[1][i1]*den[2][i2];
-                G_[(i0*n[1] + i1)*n2c + i2] = 4*pi*num/(k2*D*D)/V;
+                const label c =
+                    distributed_
+                  ? ((i1 - i1Begin)*n[0] + i0)*n2c + i2
+                  : (i0*n[1] + i1)*n2c + i2;
+                G_[c] = 4*pi*num/(k2*D*D)/V;
             }
         }
     }
@@ -825,19 +966,7 @@ void Foam::p3m::kSpace
     scalar w[3][7];
     auto stencil = [&](const point& x)
     {
-        for (direction d = 0; d < 3; ++d)
-        {
-            const scalar u = x[d]*hi[d];
-            label m = label(std::floor(u));
-            const scalar t = u - m;
-            bspline(P, t, w[d]);
-            for (label j = 0; j < P; ++j)
-            {
-                label mj = (m - j) % nn[d];
-                if (mj < 0) mj += nn[d];
-                idx[d][j] = mj;
-            }
-        }
+        assignmentStencil(x, P, hi, nn, idx, w);
     };
 
     // Charge assignment
@@ -914,7 +1043,175 @@ void Foam::p3m::kSpace
 }
 
 
+void Foam::p3m::kSpaceDistributed
+(
+    const UList<point>& xw,
+    const UList<scalar>& q,
+    UList<vector>& f
+) const
+{
+    const label nProcs = Pstream::nProcs();
+    const label P = p_.order;
+    const label n0 = p_.mesh[0], n1 = p_.mesh[1], n2 = p_.mesh[2];
+    const label n2c = n2/2 + 1, n2p = 2*n2c;
+    const scalar hi[3] = {n0/L_.x(), n1/L_.y(), n2/L_.z()};
+    const label nn[3] = {n0, n1, n2};
+    label idx[3][7];
+    scalar w[3][7];
+
+    // Each charge to the processors whose x-planes its stencil touches
+    List<DynamicList<label>> sent(nProcs);
+    forAll(xw, i)
+    {
+        assignmentStencil(xw[i], P, hi, nn, idx, w);
+        label owners[7];
+        label nOwners = 0;
+        for (label a = 0; a < P; ++a)
+        {
+            const label o = planeOwner_[idx[0][a]];
+            if (std::find(owners, owners + nOwners, o) == owners + nOwners)
+            {
+                owners[nOwners++] = o;
+            }
+        }
+        for (label k = 0; k < nOwners; ++k)
+        {
+            sent[owners[k]].append(i);
+        }
+    }
+    List<List<point>> sendX(nProcs), recvX;
+    List<List<scalar>> sendQ(nProcs), recvQ;
+    forAll(sent, proci)
+    {
+        sendX[proci] = UIndirectList<point>(xw, sent[proci]);
+        sendQ[proci] = UIndirectList<scalar>(q, sent[proci]);
+    }
+    labelList recvSizes;
+    Pstream::exchangeSizes(sendX, recvSizes);
+    Pstream::exchange<List<point>, point>(sendX, recvSizes, recvX);
+    Pstream::exchange<List<scalar>, scalar>(sendQ, recvSizes, recvQ);
+
+    // Assignment onto this processor's planes (padded rows)
+    std::fill(rho_, rho_ + localN0_*n1*n2p, 0.0);
+    forAll(recvX, proci)
+    {
+        forAll(recvX[proci], k)
+        {
+            assignmentStencil(recvX[proci][k], P, hi, nn, idx, w);
+            const scalar qk = recvQ[proci][k];
+            for (label a = 0; a < P; ++a)
+            {
+                const label i0 = idx[0][a] - local0_;
+                if (i0 < 0 || i0 >= localN0_) continue;
+                const scalar wa = qk*w[0][a];
+                for (label b = 0; b < P; ++b)
+                {
+                    const scalar wab = wa*w[1][b];
+                    double* row = rho_ + (i0*n1 + idx[1][b])*n2p;
+                    for (label c = 0; c < P; ++c)
+                    {
+                        row[idx[2][c]] += wab*w[2][c];
+                    }
+                }
+            }
+        }
+    }
+
+    fftw_execute(static_cast<fftw_plan>(planForward_));
+
+    // E_d = backward FFT of -i k_d G rho^ on the transposed slab
+    fftw_complex* rh = static_cast<fftw_complex*>(rhoHat_);
+    fftw_complex* wk = static_cast<fftw_complex*>(work_);
+    for (direction d = 0; d < 3; ++d)
+    {
+        for (label j1 = 0; j1 < localN1_; ++j1)
+        {
+            const label i1 = local1_ + j1;
+            for (label i0 = 0; i0 < n0; ++i0)
+            {
+                const label base = (j1*n0 + i0)*n2c;
+                for (label i2 = 0; i2 < n2c; ++i2)
+                {
+                    const label c = base + i2;
+                    const scalar kd =
+                        (d == 0) ? kx_[i0] : (d == 1) ? ky_[i1] : kz_[i2];
+                    const scalar g = kd*G_[c];
+                    wk[c][0] = g*rh[c][1];
+                    wk[c][1] = -g*rh[c][0];
+                }
+            }
+        }
+        fftw_execute(static_cast<fftw_plan>(planBackward_[d]));
+    }
+
+    // This slab's part of each received charge's field, sent back
+    List<List<vector>> sendE(nProcs), recvE;
+    forAll(recvX, proci)
+    {
+        sendE[proci].setSize(recvX[proci].size());
+        forAll(recvX[proci], k)
+        {
+            assignmentStencil(recvX[proci][k], P, hi, nn, idx, w);
+            scalar ex = 0, ey = 0, ez = 0;
+            for (label a = 0; a < P; ++a)
+            {
+                const label i0 = idx[0][a] - local0_;
+                if (i0 < 0 || i0 >= localN0_) continue;
+                for (label b = 0; b < P; ++b)
+                {
+                    const scalar wab = w[0][a]*w[1][b];
+                    const label row = (i0*n1 + idx[1][b])*n2p;
+                    for (label c = 0; c < P; ++c)
+                    {
+                        const scalar wabc = wab*w[2][c];
+                        const label m = row + idx[2][c];
+                        ex += wabc*Efield_[0][m];
+                        ey += wabc*Efield_[1][m];
+                        ez += wabc*Efield_[2][m];
+                    }
+                }
+            }
+            sendE[proci][k] = vector(ex, ey, ez);
+        }
+    }
+    labelList backSizes(nProcs);
+    forAll(sent, proci)
+    {
+        backSizes[proci] = sent[proci].size();
+    }
+    Pstream::exchange<List<vector>, vector>(sendE, backSizes, recvE);
+    forAll(recvE, proci)
+    {
+        forAll(sent[proci], k)
+        {
+            const label i = sent[proci][k];
+            f[i] += q[i]*recvE[proci][k];
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::p3m::tune
+(
+    const label N,
+    const scalar Q2,
+    const bool distributed
+) const
+{
+    if
+    (
+        !ready_
+     || distributed != distributed_
+     || mag(Foam::log(scalar(N)/N0_)) > 0.1
+     || mag(Foam::log(Q2/Q20_)) > 0.1
+    )
+    {
+        setup(N, Q2, distributed);
+    }
+}
+
 
 const Foam::p3m::parameters& Foam::p3m::tune
 (
@@ -922,15 +1219,7 @@ const Foam::p3m::parameters& Foam::p3m::tune
     const scalar Q2
 ) const
 {
-    if
-    (
-        !ready_
-     || mag(Foam::log(scalar(N)/N0_)) > 0.1
-     || mag(Foam::log(Q2/Q20_)) > 0.1
-    )
-    {
-        setup(N, Q2);
-    }
+    tune(N, Q2, distributed_ && ready_);
     return p_;
 }
 
@@ -950,7 +1239,7 @@ void Foam::p3m::compute
     for (const scalar qi : q) Q2 += qi*qi;
     if (N == 0 || Q2 == 0) return;
 
-    tune(N, Q2);
+    tune(N, Q2, false);
 
     List<point> xw(N);
     forAll(x, i)
@@ -974,6 +1263,69 @@ void Foam::p3m::compute
 }
 
 
+void Foam::p3m::computeDistributed
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const List<boundBox>& boxes,
+    List<vector>& f
+) const
+{
+    if (!Pstream::parRun())
+    {
+        compute(x, q, f);
+        return;
+    }
+
+    checkInput(x, q);
+    const label nLocal = x.size();
+    f.setSize(nLocal);
+    f = Zero;
+    label N = nLocal;
+    scalar Q2 = 0;
+    for (const scalar qi : q) Q2 += qi*qi;
+    reduce(N, sumOp<label>());
+    reduce(Q2, sumOp<scalar>());
+    if (N == 0 || Q2 == 0) return;
+
+    tune(N, Q2, true);
+
+    using clock = std::chrono::steady_clock;
+    const auto t0 = clock::now();
+
+    // Real space: this processor's charges and the others' within rCut of
+    // its box (unwrapped positions: the halo finds them by the boxes and
+    // the periodic translations), then all wrapped for the cell list
+    const processorHalo halo(boxes, x, p_.rCut, periodicTranslations());
+    List<scalar> qh(q);
+    halo.gather(qh);
+    List<point> xh(halo.points());
+    forAll(xh, i)
+    {
+        xh[i] = wrap(xh[i]);
+    }
+    nLocal_ = nLocal;
+    nHalo_ = xh.size() - nLocal;
+    List<vector> fh(xh.size(), Zero);
+    realSpace(xh, qh, fh);
+    forAll(f, i)
+    {
+        f[i] = fh[i];
+    }
+    const auto t1 = clock::now();
+
+    kSpaceDistributed(SubList<point>(xh, nLocal), q, f);
+    const auto t2 = clock::now();
+    timeReal_ = std::chrono::duration<double>(t1 - t0).count();
+    timeKspace_ = std::chrono::duration<double>(t2 - t1).count();
+
+    forAll(f, i)
+    {
+        f[i] *= k_;
+    }
+}
+
+
 void Foam::p3m::writeInfo(Ostream& os) const
 {
     periodicElectrostatics::writeInfo(os);
@@ -986,6 +1338,13 @@ void Foam::p3m::writeInfo(Ostream& os) const
             << p_.fastErfc << ", estimated rms error = " << p_.error
             << " N (real " << p_.errorReal << ", kspace " << p_.errorKspace
             << "), target " << p_.target << " N";
+        if (distributed_)
+        {
+            os  << " | distributed: x-planes " << local0_ << ".."
+                << local0_ + localN0_ - 1 << " of " << p_.mesh[0]
+                << " on this processor, " << nLocal_ << " own charges + "
+                << nHalo_ << " of the halo (of " << N0_ << ")";
+        }
     }
 }
 

@@ -10,6 +10,8 @@
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "Pstream.H"
+#include "ListListOps.H"
 
 #include <algorithm>
 
@@ -193,6 +195,67 @@ void Foam::periodicElectrostatics::checkInput
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::periodicElectrostatics::computeDistributed
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const List<boundBox>& boxes,
+    List<vector>& f
+) const
+{
+    if (!Pstream::parRun())
+    {
+        compute(x, q, f);
+        return;
+    }
+
+    // Every processor's charges on every processor, in processor order
+    List<pointField> allX(Pstream::nProcs());
+    List<scalarField> allQ(Pstream::nProcs());
+    allX[Pstream::myProcNo()] = x;
+    allQ[Pstream::myProcNo()] = q;
+    Pstream::gatherList(allX);
+    Pstream::scatterList(allX);
+    Pstream::gatherList(allQ);
+    Pstream::scatterList(allQ);
+    label myStart = 0;
+    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    {
+        myStart += allX[proci].size();
+    }
+
+    List<vector> fAll;
+    compute
+    (
+        ListListOps::combine<pointField>(allX, accessOp<pointField>()),
+        ListListOps::combine<scalarField>(allQ, accessOp<scalarField>()),
+        fAll
+    );
+    f = SubList<vector>(fAll, x.size(), myStart);
+}
+
+
+Foam::List<Foam::vector>
+Foam::periodicElectrostatics::periodicTranslations() const
+{
+    List<vector> t;
+    for (label i = -1; i <= 1; ++i)
+    {
+        for (label j = -1; j <= 1; ++j)
+        {
+            for (label k = -1; k <= 1; ++k)
+            {
+                if (i || j || k)
+                {
+                    t.append(vector(i*L_.x(), j*L_.y(), k*L_.z()));
+                }
+            }
+        }
+    }
+    return t;
+}
+
 
 Foam::scalar Foam::periodicElectrostatics::forceScale
 (

@@ -4,6 +4,7 @@
 
 #include "PeriodicCoulomb.H"
 #include "cyclicPolyPatch.H"
+#include "processorHalo.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -112,7 +113,8 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
 :
     ElectrostaticsModel<CloudType>(dict, owner, typeName),
     kernelDict_(kernelDict(this->coeffDict(), owner)),
-    kernel_(periodicElectrostatics::New(kernelDict_))
+    kernel_(periodicElectrostatics::New(kernelDict_)),
+    infoWritten_(false)
 {
     const scalar chi = owner.constProps().stiffnessRatio();
     if (chi != 1)
@@ -137,7 +139,8 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
 :
     ElectrostaticsModel<CloudType>(em),
     kernelDict_(em.kernelDict_),
-    kernel_(periodicElectrostatics::New(kernelDict_))
+    kernel_(periodicElectrostatics::New(kernelDict_)),
+    infoWritten_(false)
 {}
 
 
@@ -148,15 +151,35 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
 {
     reportTimeStep();
 
-    pointField x;
-    scalarField q;
-    label offset = 0;
-    this->gatherCharges(x, q, offset);
+    if (Pstream::parRun() && boxes_.empty())
+    {
+        boxes_ = processorHalo::processorBoxes(this->owner().mesh());
+    }
+
+    // This processor's parcels: the kernel exchanges what it needs
+    pointField x(this->owner().size());
+    scalarField q(x.size());
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        x[i] = p.centre();
+        q[i] = p.q();
+        ++i;
+    }
 
     List<vector> f;
-    kernel_->compute(x, q, f);
+    kernel_->computeDistributed(x, q, boxes_, f);
+    if (!infoWritten_)
+    {
+        infoWritten_ = true;
+        // The parameters chosen for the run's first step (and, in parallel,
+        // what the master holds)
+        Info<< "    ";
+        kernel_->writeInfo(Info);
+        Info<< endl;
+    }
 
-    label i = offset;
+    i = 0;
     for (auto& p : this->owner())
     {
         p.fE() = f[i];

@@ -6,8 +6,10 @@
 #include "ElectrostaticsModel.H"
 #include "inducedDipole.H"
 #include "Pstream.H"
+#include "processorHalo.H"
 
 #include <algorithm>
+#include <memory>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -229,15 +231,56 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
             << exit(FatalIOError);
     }
 
-    // Every processor gets every parcel, in one order
-    label myStart = 0, start = 0;
-    const pointField x(this->gatherAll(myX, myStart));
-    const scalarField q(this->gatherAll(myQ, start));
-    const tensorField A(this->gatherAll(myA, start));
-    const vectorField E0(this->gatherAll(myE, start));
-    const vectorField P0(this->gatherAll(myP, start));
-    const labelList ids(this->gatherAll(myId, start));
+    // This processor's parcels and, in parallel, copies of the other
+    // processors' parcels within rNear of its box (a halo: every pair of
+    // an own parcel is here; through the periodic box's translations if
+    // the far field is periodic), sorted by (origProc, origId)
+    pointField x(myX);
+    scalarField q(myQ);
+    tensorField A(myA);
+    vectorField E0(myE);
+    vectorField P0(myP);
+    List<labelPair> keys(n);
+    forAll(keys, k)
+    {
+        keys[k] = labelPair(myId[2*k], myId[2*k + 1]);
+    }
+    std::unique_ptr<processorHalo> halo;
+    if (Pstream::parRun())
+    {
+        if (boxes_.empty())
+        {
+            boxes_ = processorHalo::processorBoxes(cloud.mesh());
+        }
+        List<vector> translations;
+        if (cmptMax(L) > 0)
+        {
+            for (label a = -1; a <= 1; ++a)
+            for (label b = -1; b <= 1; ++b)
+            for (label c = -1; c <= 1; ++c)
+            {
+                if (a || b || c)
+                {
+                    translations.append(vector(a*L.x(), b*L.y(), c*L.z()));
+                }
+            }
+        }
+        halo.reset(new processorHalo(boxes_, myX, rNear_, translations));
+        x = halo->points();
+        halo->gather(q);
+        halo->gather(A);
+        halo->gather(E0);
+        halo->gather(P0);
+        halo->gather(keys);
+    }
     const label N = x.size();
+    labelList ids(2*N);
+    forAll(keys, k)
+    {
+        ids[2*k] = keys[k].first();
+        ids[2*k + 1] = keys[k].second();
+    }
+    const label myStart = 0;
     const labelList order(this->idOrder(ids));
     labelList rank(N);
     forAll(order, k)
@@ -249,6 +292,11 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     const tensorField As(A, order);
     const vectorField E0s(E0, order);
     const vectorField P0s(P0, order);
+    boolList owned(N);
+    forAll(order, k)
+    {
+        owned[k] = order[k] < n;
+    }
 
     inducedDipole& dipoles = dipoles_;
     dipoles.setMediumPermittivity(kappa0);
@@ -257,6 +305,40 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     dipoles.setCutoff(rNear_);
     dipoles.setPeriod(L);
     dipoles.setInitialDipoles(P0s);
+    if (halo)
+    {
+        // The CG on every processor's parcels at once: the copies' entries
+        // from their owners before each operator application, dot
+        // products summed over the processors
+        dipoles.setDistribution
+        (
+            owned,
+            [&](UList<vector>& v)
+            {
+                List<vector> h(N);
+                forAll(order, k)
+                {
+                    h[order[k]] = v[k];
+                }
+                halo->updateHalo(h);
+                forAll(order, k)
+                {
+                    if (!owned[k])
+                    {
+                        v[k] = h[order[k]];
+                    }
+                }
+            },
+            [](const scalar v)
+            {
+                return returnReduce(v, sumOp<scalar>());
+            }
+        );
+    }
+    else
+    {
+        dipoles.setDistribution(boolList(), nullptr, nullptr);
+    }
 
     // Pairs in contact, from the collision records (Ruan Eq. 44)
     if (contactWeight_ != 1)
@@ -284,11 +366,9 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
             }
             ++i;
         }
-        dipoles.setPairWeights
-        (
-            this->gatherAll(List<labelPair>(contacts), start),
-            contactWeight_
-        );
+        // Every parcel's records name its partners (both sides keep one),
+        // so the own parcels' records hold every pair this processor needs
+        dipoles.setPairWeights(contacts, contactWeight_);
     }
 
     dipoles.solve();
@@ -305,7 +385,13 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     }
 
     energy_ = dipoles.externalEnergy();
-    nPairs_ = dipoles.pairs().size();
+    // Pairs of the whole cloud: a pair with a copy is on two processors
+    scalar nPairs = 0;
+    for (const inducedDipole::pair& ij : dipoles.pairs())
+    {
+        nPairs += 0.5*(owned[ij.i] + owned[ij.j]);
+    }
+    nPairs_ = label(returnReduce(nPairs, sumOp<scalar>()) + 0.5);
     iterations_ = dipoles.iterations();
     residual_ = dipoles.residual();
 }
