@@ -189,6 +189,50 @@ print("%s: bemClusters.neighbours.restart (second step after a restart vs uninte
       " difference %.1e, torque %.1e; tol 1e-10)" % ("PASS" if ok else "FAIL", eF, eT))
 PYEOF
 
+# The same scene with 8 more parcels far from every triad, serial and on 2
+# processors: only the parcels in or near clusters are gathered (24 of
+# 32, each processor marking its own from a halo), the far ones keep
+# their point charges and dipoles, and the two runs agree
+for np_ in 1 2
+do
+    neighbourCase "$work/neighbours/dilute$np_" dilute
+    (
+        cd "$work/neighbours/dilute$np_" || exit 1
+        setEndTime 2e-6
+        if [ "$np_" = 1 ]
+        then
+            run solver chargedParticleFoam
+        else
+            run decomposePar decomposePar && run solver mpirun -np 2 chargedParticleFoam -parallel
+        fi
+    ) || fail "bemClusters.dilute$np_ (failed)"
+    grep -Eq "BEM parcels in or near clusters = 24 of 32" "$work/neighbours/dilute$np_/log.solver" \
+        && pass "bemClusters.dilute$np_.gathered (24 of 32 parcels gathered, in or near clusters)" \
+        || fail "bemClusters.dilute$np_.gathered (the log does not show 24 of 32 parcels gathered)"
+done
+$PY - "$work/neighbours" "$top" <<'PYEOF'
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[2] + "/etc/python")
+from foamLagrangian import read_particle_history
+def last(case):
+    h, c = read_particle_history(case)
+    h = h[h[:, c["time"]] == h[:, c["time"]].max()]
+    return (h[:, [c[a] for a in "xyz"]], h[:, [c["fE" + a] for a in "xyz"]],
+            h[:, [c["tE" + a] for a in "xyz"]], h[0, c["time"]])
+xs, fs, ts, t1 = last(sys.argv[1] + "/dilute1")
+xp, fp, tp, t2 = last(sys.argv[1] + "/dilute2")
+m = np.array([int(np.argmin(np.linalg.norm(xp - x, axis=1))) for x in xs])
+fp, tp = fp[m], tp[m]
+eF = np.abs(fs - fp).max()/np.abs(fs).max()
+eT = np.abs(ts - tp).max()/np.abs(ts).max()
+ok = (len(xs) == len(xp) == 32 and abs(t1 - 2e-6) < 1e-12 and abs(t2 - 2e-6) < 1e-12
+      and sorted(m) == list(range(32)) and eF < 1e-10 and eT < 1e-10)
+print("%s: bemClusters.dilute.parallel (second step, 2 processors vs serial, 24 parcels in or near"
+      " clusters and 8 far ones: force difference %.1e, torque %.1e; tol 1e-10)"
+      % ("PASS" if ok else "FAIL", eF, eT))
+PYEOF
+
 # Two like-charged spheres (radii 50 and 100 um, epsilonR 10) released
 # 0.3 a1 apart attract; their gap against the exact two-sphere force
 # integrated (RK4) until 0.1 a1, and the total momentum

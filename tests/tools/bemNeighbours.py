@@ -11,7 +11,7 @@ pointCharges, and all-particle BEM (clusterGap 1e6: every parcel in one
 cluster), the reference. Relative RMS errors of the forces and torques of
 the members and of the third parcels against the reference.
 
-  bemNeighbours.py write <case> multipoles|pointCharges|allBem
+  bemNeighbours.py write <case> multipoles|pointCharges|allBem|dilute
   bemNeighbours.py compare <dir with the three cases> [--tol 0.01]
       -> markdown table, PASS/FAIL lines
 """
@@ -84,14 +84,22 @@ def triads():
 
 
 def write(case, variant):
+    """variant: a key of NEAR, or dilute: multipoles with 8 more parcels
+    far from every triad (in no cluster and near none: not gathered)"""
     lines = []
     for kappa, parcels in triads():
         for x, qw, q in parcels:
             lines.append("                { position (%.17g %.17g %.17g); semiAxes (%g %g %g);"
                          " quaternion (%.17g %.17g %.17g %.17g); epsilonR %g; q %.17g; }"
                          % (*x, *S, *qw, kappa, q))
+    if variant == "dilute":
+        for k in range(8):
+            x = (0.025*(1 if k & 1 else -1), (0.025 if k & 2 else -0.035), (0.025 if k & 4 else -0.035))
+            lines.append("                { position (%g %g %g); semiAxes (%g %g %g);"
+                         " quaternion (1 0 0 0); epsilonR 10; q %g; }"
+                         % (*x, *S, (1 if k % 3 else -1)*(0.5 + 0.1*k)*1e-13))
     es = ("    electrostaticsModel directCoulomb;\n"
-          "    directCoulombCoeffs { %s }\n" % NEAR[variant])
+          "    directCoulombCoeffs { %s }\n" % NEAR["multipoles" if variant == "dilute" else variant])
     open(os.path.join(case, "constant/cloudProperties"), "w").write(
         heldCloud.cloudProperties(es, "\n".join(lines)))
 
@@ -140,7 +148,7 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("what", choices=("write", "compare"))
     ap.add_argument("case")
-    ap.add_argument("variant", nargs="?", choices=tuple(NEAR))
+    ap.add_argument("variant", nargs="?", choices=tuple(NEAR) + ("dilute",))
     ap.add_argument("--tol", type=float, default=0.01)
     a = ap.parse_args()
     if a.what == "write":

@@ -14,7 +14,7 @@ decomposed cloud (each rank reads its own parcels, as in a large run). Peak
 memory is the resident high-water mark (VmHWM) of the S-step run.
 
     commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
-                  [--rungs cutoffCoulomb,directCoulomb,meshPoisson,periodic,inducedDipole]
+                  [--rungs cutoffCoulomb,directCoulomb,meshPoisson,periodic,inducedDipole,bem]
                   [--work /tmp/commVolume]
     commVolume.py --pingpong    (latency and bandwidth between 2 ranks)
     commVolume.py --rungs shortDuct --n 400 --ranks 2,4,8
@@ -51,6 +51,10 @@ RUNGS = {
     # dipoles within rNear (a halo and a distributed CG)
     "inducedDipole": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
                      "nearField { type inducedDipole; rNear 0.05; } }",
+    # The same with BEM clusters (none form at this density: what the
+    # cluster search costs)
+    "bem": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
+           "nearField { type bem; rNear 0.05; } }",
 }
 
 
@@ -92,7 +96,7 @@ def make_case(case, P, n, rung, steps, seed=1):
     q = 1e-9*(2*rng.random(n*P) - 1)
     p = os.path.join(case, "constant", "cloudProperties")
     s = open(p).read()
-    eps = " epsilonR 4;" if rung == "inducedDipole" else ""
+    eps = " epsilonR 4;" if rung in ("inducedDipole", "bem") else ""
     parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000;%s q %.9g; }"
                         % (r[0], r[1], r[2], eps, c) for r, c in zip(x, q))
     s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)

@@ -9,6 +9,7 @@
 #include "OStringStream.H"
 #include "Pstream.H"
 #include "processorHalo.H"
+#include "ListListOps.H"
 
 #include <mpi.h>
 #include <fftw3-mpi.h>
@@ -945,43 +946,35 @@ void Foam::p3m::realSpace
 }
 
 
-void Foam::p3m::kSpace
+void Foam::p3m::assign
 (
     const UList<point>& xw,
-    const UList<scalar>& q,
-    UList<vector>& f
+    const UList<scalar>& q
 ) const
 {
-    const label N = xw.size();
     const label P = p_.order;
-    const label n0 = p_.mesh[0], n1 = p_.mesh[1], n2 = p_.mesh[2];
-    const label n2c = n2/2 + 1;
-    const scalar hi[3] = {n0/L_.x(), n1/L_.y(), n2/L_.z()};
-    const label nn[3] = {n0, n1, n2};
-
-    std::fill(rho_, rho_ + n0*n1*n2, 0.0);
-
-    // Mesh indices and weights of one particle
+    const label n1 = p_.mesh[1];
+    const label stride = meshRowStride();
+    const scalar hi[3] =
+        {p_.mesh[0]/L_.x(), p_.mesh[1]/L_.y(), p_.mesh[2]/L_.z()};
     label idx[3][7];
     scalar w[3][7];
-    auto stencil = [&](const point& x)
-    {
-        assignmentStencil(x, P, hi, nn, idx, w);
-    };
 
-    // Charge assignment
-    for (label i = 0; i < N; ++i)
+    std::fill(rho_, rho_ + localN0_*n1*stride, 0.0);
+    forAll(xw, i)
     {
-        stencil(xw[i]);
+        assignmentStencil(xw[i], P, hi, p_.mesh, idx, w);
         const scalar qi = q[i];
         for (label a = 0; a < P; ++a)
         {
+            // This processor's x-planes only (serial: all)
+            const label i0 = idx[0][a] - local0_;
+            if (i0 < 0 || i0 >= localN0_) continue;
             const scalar wa = qi*w[0][a];
-            const label ia = idx[0][a]*n1;
             for (label b = 0; b < P; ++b)
             {
                 const scalar wab = wa*w[1][b];
-                double* row = rho_ + (ia + idx[1][b])*n2;
+                double* row = rho_ + (i0*n1 + idx[1][b])*stride;
                 for (label c = 0; c < P; ++c)
                 {
                     row[idx[2][c]] += wab*w[2][c];
@@ -989,19 +982,30 @@ void Foam::p3m::kSpace
             }
         }
     }
+}
 
+
+void Foam::p3m::solveMesh() const
+{
     fftw_execute(static_cast<fftw_plan>(planForward_));
 
-    // E_d = backward FFT of -i k_d G rho^ (G includes 1/V)
+    // E_d = backward FFT of -i k_d G rho^ (G includes 1/V), in the
+    // transform's order: (i0, i1, i2) serial, (i1, i0, i2) distributed
+    const label n0 = p_.mesh[0], n1 = p_.mesh[1];
+    const label n2c = p_.mesh[2]/2 + 1;
+    const label nOuter = distributed_ ? localN1_ : n0;
+    const label nMiddle = distributed_ ? n0 : n1;
     fftw_complex* rh = static_cast<fftw_complex*>(rhoHat_);
     fftw_complex* wk = static_cast<fftw_complex*>(work_);
     for (direction d = 0; d < 3; ++d)
     {
-        for (label i0 = 0; i0 < n0; ++i0)
+        for (label o = 0; o < nOuter; ++o)
         {
-            for (label i1 = 0; i1 < n1; ++i1)
+            for (label m = 0; m < nMiddle; ++m)
             {
-                const label base = (i0*n1 + i1)*n2c;
+                const label i0 = distributed_ ? m : o;
+                const label i1 = distributed_ ? local1_ + o : m;
+                const label base = (o*nMiddle + m)*n2c;
                 for (label i2 = 0; i2 < n2c; ++i2)
                 {
                     const label c = base + i2;
@@ -1015,30 +1019,56 @@ void Foam::p3m::kSpace
         }
         fftw_execute(static_cast<fftw_plan>(planBackward_[d]));
     }
+}
 
-    // Interpolation with the same weights
-    for (label i = 0; i < N; ++i)
+
+Foam::vector Foam::p3m::interpolate(const point& xw) const
+{
+    const label P = p_.order;
+    const label n1 = p_.mesh[1];
+    const label stride = meshRowStride();
+    const scalar hi[3] =
+        {p_.mesh[0]/L_.x(), p_.mesh[1]/L_.y(), p_.mesh[2]/L_.z()};
+    label idx[3][7];
+    scalar w[3][7];
+    assignmentStencil(xw, P, hi, p_.mesh, idx, w);
+
+    // The same weights as the assignment, on this processor's x-planes
+    scalar ex = 0, ey = 0, ez = 0;
+    for (label a = 0; a < P; ++a)
     {
-        stencil(xw[i]);
-        scalar ex = 0, ey = 0, ez = 0;
-        for (label a = 0; a < P; ++a)
+        const label i0 = idx[0][a] - local0_;
+        if (i0 < 0 || i0 >= localN0_) continue;
+        for (label b = 0; b < P; ++b)
         {
-            const label ia = idx[0][a]*n1;
-            for (label b = 0; b < P; ++b)
+            const scalar wab = w[0][a]*w[1][b];
+            const label row = (i0*n1 + idx[1][b])*stride;
+            for (label c = 0; c < P; ++c)
             {
-                const scalar wab = w[0][a]*w[1][b];
-                const label row = (ia + idx[1][b])*n2;
-                for (label c = 0; c < P; ++c)
-                {
-                    const scalar wabc = wab*w[2][c];
-                    const label m = row + idx[2][c];
-                    ex += wabc*Efield_[0][m];
-                    ey += wabc*Efield_[1][m];
-                    ez += wabc*Efield_[2][m];
-                }
+                const scalar wabc = wab*w[2][c];
+                const label m = row + idx[2][c];
+                ex += wabc*Efield_[0][m];
+                ey += wabc*Efield_[1][m];
+                ez += wabc*Efield_[2][m];
             }
         }
-        f[i] += q[i]*vector(ex, ey, ez);
+    }
+    return vector(ex, ey, ez);
+}
+
+
+void Foam::p3m::kSpace
+(
+    const UList<point>& xw,
+    const UList<scalar>& q,
+    UList<vector>& f
+) const
+{
+    assign(xw, q);
+    solveMesh();
+    forAll(xw, i)
+    {
+        f[i] += q[i]*interpolate(xw[i]);
     }
 }
 
@@ -1052,10 +1082,8 @@ void Foam::p3m::kSpaceDistributed
 {
     const label nProcs = Pstream::nProcs();
     const label P = p_.order;
-    const label n0 = p_.mesh[0], n1 = p_.mesh[1], n2 = p_.mesh[2];
-    const label n2c = n2/2 + 1, n2p = 2*n2c;
-    const scalar hi[3] = {n0/L_.x(), n1/L_.y(), n2/L_.z()};
-    const label nn[3] = {n0, n1, n2};
+    const scalar hi[3] =
+        {p_.mesh[0]/L_.x(), p_.mesh[1]/L_.y(), p_.mesh[2]/L_.z()};
     label idx[3][7];
     scalar w[3][7];
 
@@ -1063,7 +1091,7 @@ void Foam::p3m::kSpaceDistributed
     List<DynamicList<label>> sent(nProcs);
     forAll(xw, i)
     {
-        assignmentStencil(xw[i], P, hi, nn, idx, w);
+        assignmentStencil(xw[i], P, hi, p_.mesh, idx, w);
         label owners[7];
         label nOwners = 0;
         for (label a = 0; a < P; ++a)
@@ -1091,87 +1119,27 @@ void Foam::p3m::kSpaceDistributed
     Pstream::exchange<List<point>, point>(sendX, recvSizes, recvX);
     Pstream::exchange<List<scalar>, scalar>(sendQ, recvSizes, recvQ);
 
-    // Assignment onto this processor's planes (padded rows)
-    std::fill(rho_, rho_ + localN0_*n1*n2p, 0.0);
-    forAll(recvX, proci)
-    {
-        forAll(recvX[proci], k)
-        {
-            assignmentStencil(recvX[proci][k], P, hi, nn, idx, w);
-            const scalar qk = recvQ[proci][k];
-            for (label a = 0; a < P; ++a)
-            {
-                const label i0 = idx[0][a] - local0_;
-                if (i0 < 0 || i0 >= localN0_) continue;
-                const scalar wa = qk*w[0][a];
-                for (label b = 0; b < P; ++b)
-                {
-                    const scalar wab = wa*w[1][b];
-                    double* row = rho_ + (i0*n1 + idx[1][b])*n2p;
-                    for (label c = 0; c < P; ++c)
-                    {
-                        row[idx[2][c]] += wab*w[2][c];
-                    }
-                }
-            }
-        }
-    }
-
-    fftw_execute(static_cast<fftw_plan>(planForward_));
-
-    // E_d = backward FFT of -i k_d G rho^ on the transposed slab
-    fftw_complex* rh = static_cast<fftw_complex*>(rhoHat_);
-    fftw_complex* wk = static_cast<fftw_complex*>(work_);
-    for (direction d = 0; d < 3; ++d)
-    {
-        for (label j1 = 0; j1 < localN1_; ++j1)
-        {
-            const label i1 = local1_ + j1;
-            for (label i0 = 0; i0 < n0; ++i0)
-            {
-                const label base = (j1*n0 + i0)*n2c;
-                for (label i2 = 0; i2 < n2c; ++i2)
-                {
-                    const label c = base + i2;
-                    const scalar kd =
-                        (d == 0) ? kx_[i0] : (d == 1) ? ky_[i1] : kz_[i2];
-                    const scalar g = kd*G_[c];
-                    wk[c][0] = g*rh[c][1];
-                    wk[c][1] = -g*rh[c][0];
-                }
-            }
-        }
-        fftw_execute(static_cast<fftw_plan>(planBackward_[d]));
-    }
+    // Assigned on this processor's slab, solved on the distributed mesh
+    const List<point> xr(ListListOps::combine<List<point>>
+    (
+        recvX, accessOp<List<point>>()
+    ));
+    assign
+    (
+        xr,
+        ListListOps::combine<List<scalar>>(recvQ, accessOp<List<scalar>>())
+    );
+    solveMesh();
 
     // This slab's part of each received charge's field, sent back
     List<List<vector>> sendE(nProcs), recvE;
+    label k = 0;
     forAll(recvX, proci)
     {
         sendE[proci].setSize(recvX[proci].size());
-        forAll(recvX[proci], k)
+        for (vector& E : sendE[proci])
         {
-            assignmentStencil(recvX[proci][k], P, hi, nn, idx, w);
-            scalar ex = 0, ey = 0, ez = 0;
-            for (label a = 0; a < P; ++a)
-            {
-                const label i0 = idx[0][a] - local0_;
-                if (i0 < 0 || i0 >= localN0_) continue;
-                for (label b = 0; b < P; ++b)
-                {
-                    const scalar wab = w[0][a]*w[1][b];
-                    const label row = (i0*n1 + idx[1][b])*n2p;
-                    for (label c = 0; c < P; ++c)
-                    {
-                        const scalar wabc = wab*w[2][c];
-                        const label m = row + idx[2][c];
-                        ex += wabc*Efield_[0][m];
-                        ey += wabc*Efield_[1][m];
-                        ez += wabc*Efield_[2][m];
-                    }
-                }
-            }
-            sendE[proci][k] = vector(ex, ey, ez);
+            E = interpolate(xr[k++]);
         }
     }
     labelList backSizes(nProcs);
@@ -1182,10 +1150,10 @@ void Foam::p3m::kSpaceDistributed
     Pstream::exchange<List<vector>, vector>(sendE, backSizes, recvE);
     forAll(recvE, proci)
     {
-        forAll(sent[proci], k)
+        forAll(sent[proci], j)
         {
-            const label i = sent[proci][k];
-            f[i] += q[i]*recvE[proci][k];
+            const label i = sent[proci][j];
+            f[i] += q[i]*recvE[proci][j];
         }
     }
 }
@@ -1296,7 +1264,10 @@ void Foam::p3m::computeDistributed
     // Real space: this processor's charges and the others' within rCut of
     // its box (unwrapped positions: the halo finds them by the boxes and
     // the periodic translations), then all wrapped for the cell list
-    const processorHalo halo(boxes, x, p_.rCut, periodicTranslations());
+    const processorHalo halo
+    (
+        boxes, x, p_.rCut, processorHalo::boxTranslations(L_)
+    );
     List<scalar> qh(q);
     halo.gather(qh);
     List<point> xh(halo.points());

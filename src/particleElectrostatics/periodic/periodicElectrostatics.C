@@ -236,27 +236,6 @@ void Foam::periodicElectrostatics::computeDistributed
 }
 
 
-Foam::List<Foam::vector>
-Foam::periodicElectrostatics::periodicTranslations() const
-{
-    List<vector> t;
-    for (label i = -1; i <= 1; ++i)
-    {
-        for (label j = -1; j <= 1; ++j)
-        {
-            for (label k = -1; k <= 1; ++k)
-            {
-                if (i || j || k)
-                {
-                    t.append(vector(i*L_.x(), j*L_.y(), k*L_.z()));
-                }
-            }
-        }
-    }
-    return t;
-}
-
-
 Foam::scalar Foam::periodicElectrostatics::forceScale
 (
     const UList<scalar>& q

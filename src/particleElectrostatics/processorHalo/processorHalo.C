@@ -22,6 +22,29 @@ Foam::List<Foam::boundBox> Foam::processorHalo::processorBoxes
 }
 
 
+Foam::List<Foam::vector> Foam::processorHalo::boxTranslations
+(
+    const vector& L
+)
+{
+    List<vector> t;
+    for (label i = -1; i <= 1; ++i)
+    {
+        for (label j = -1; j <= 1; ++j)
+        {
+            for (label k = -1; k <= 1; ++k)
+            {
+                if (i || j || k)
+                {
+                    t.append(vector(i*L.x(), j*L.y(), k*L.z()));
+                }
+            }
+        }
+    }
+    return t;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::processorHalo::processorHalo

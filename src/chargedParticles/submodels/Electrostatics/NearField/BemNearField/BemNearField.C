@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "BemNearField.H"
+#include "processorHalo.H"
 #include "ElectrostaticsModel.H"
 #include "cutoffPairs.H"
 #include "cpuTime.H"
@@ -29,6 +30,23 @@ inline scalar extent(const vector& s, const tensor& R, const vector& u)
     (
         sqr(s.x()*ub.x()) + sqr(s.y()*ub.y()) + sqr(s.z()*ub.z())
     );
+}
+
+//- Centre-line gap of the ellipsoids a and b (semi-axes s, rotations R),
+//  r = x_a - x_b, r2 = |r|^2
+inline scalar centreLineGap
+(
+    const vector& sa,
+    const tensor& Ra,
+    const vector& sb,
+    const tensor& Rb,
+    const vector& r,
+    const scalar r2
+)
+{
+    const scalar d = Foam::sqrt(r2);
+    const vector u = -r/d;      // from a to b
+    return d - extent(sa, Ra, u) - extent(sb, Rb, u);
 }
 
 //- A rotation taking (1 0 0) to the unit vector u
@@ -523,6 +541,102 @@ Foam::BemNearField<CloudType>::BemNearField
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
+Foam::boolList Foam::BemNearField<CloudType>::nearClusters
+(
+    const pointField& x,
+    const tensorField& R,
+    const vectorField& S,
+    const scalarField& K,
+    const scalar kappa0,
+    scalar& dMax
+)
+{
+    using namespace bemNearFieldDetail;
+
+    // The reach of a close pair (as correct() searches them) and the
+    // near-field radius, over all processors
+    scalar sMax = 0;
+    dMax = 0;
+    forAll(S, k)
+    {
+        sMax = max(sMax, cmptMax(S[k]));
+        if (K[k] != kappa0)
+        {
+            dMax = max(dMax, 2*cmptMax(S[k]));
+        }
+    }
+    reduce(sMax, maxOp<scalar>());
+    reduce(dMax, maxOp<scalar>());
+    const scalar rCut = sMax*(2 + clusterGap_);
+    const scalar rNear = multipoleNeighbours_ ? this->rNearFor(dMax) : 0;
+
+    // This processor's parcels and the others' within reach of its box
+    const processorHalo halo
+    (
+        Pstream::parRun() ? this->processorBoxes() : List<boundBox>(),
+        x,
+        max(rCut, rNear)
+    );
+    const pointField& xh = halo.points();
+    tensorField Rh(R);
+    vectorField Sh(S);
+    scalarField Kh(K);
+    halo.gather(Rh);
+    halo.gather(Sh);
+    halo.gather(Kh);
+
+    // Members: a close partner (the same test as correct()'s); the
+    // copies' flags from their owners (their partners may lie beyond this
+    // processor's halo)
+    List<bool> member(xh.size(), false);
+    if (rCut > 0)
+    {
+        forPairsWithinCutoff
+        (
+            xh, xh, rCut, 0,
+            [&](const label a, const label b, const vector& r, const scalar r2)
+            {
+                if (a >= b || (Kh[a] == kappa0 && Kh[b] == kappa0))
+                {
+                    return;
+                }
+                const scalar g =
+                    centreLineGap(Sh[a], Rh[a], Sh[b], Rh[b], r, r2);
+                if (g < clusterGap_*min(cmptMin(Sh[a]), cmptMin(Sh[b])))
+                {
+                    member[a] = member[b] = true;
+                }
+            }
+        );
+    }
+    halo.updateHalo(member);
+
+    // Needed: the members and the parcels within rNear of one
+    boolList needed(SubList<bool>(member, x.size()));
+    if (rNear > 0)
+    {
+        const label n = x.size();
+        forPairsWithinCutoff
+        (
+            xh, xh, rNear, 0,
+            [&](const label a, const label b, const vector&, const scalar)
+            {
+                if (member[b] && a < n)
+                {
+                    needed[a] = true;
+                }
+                if (member[a] && b < n)
+                {
+                    needed[b] = true;
+                }
+            }
+        );
+    }
+    return needed;
+}
+
+
+template<class CloudType>
 void Foam::BemNearField<CloudType>::correct
 (
     const ElectrostaticsModel<CloudType>& farField
@@ -574,13 +688,55 @@ void Foam::BemNearField<CloudType>::correct
         myId[2*i + 1] = p.origId();
         ++i;
     }
+    // Only the parcels in or near clusters enter the cluster solves: those
+    // of every processor are gathered (each processor marks its own from
+    // a halo), the others stay where they are
+    scalar dMax = 0;
+    const boolList needed(nearClusters(myX, myR, myS, myK, kappa0, dMax));
+    DynamicList<label> sel;
+    forAll(needed, k)
+    {
+        if (needed[k])
+        {
+            sel.append(k);
+        }
+    }
+    labelList selIds(2*sel.size());
+    forAll(sel, k)
+    {
+        selIds[2*k] = myId[2*sel[k]];
+        selIds[2*k + 1] = myId[2*sel[k] + 1];
+    }
     label myStart = 0, start = 0;
-    const pointField x(this->gatherAll(myX, myStart));
-    const tensorField R(this->gatherAll(myR, start));
-    const vectorField S(this->gatherAll(myS, start));
-    const scalarField q(this->gatherAll(myQ, start));
-    const scalarField K(this->gatherAll(myK, start));
-    const labelList ids(this->gatherAll(myId, start));
+    const pointField x
+    (
+        this->gatherAll(pointField(UIndirectList<point>(myX, sel)), myStart)
+    );
+    const tensorField R
+    (
+        this->gatherAll(tensorField(UIndirectList<tensor>(myR, sel)), start)
+    );
+    const vectorField S
+    (
+        this->gatherAll(vectorField(UIndirectList<vector>(myS, sel)), start)
+    );
+    const scalarField q
+    (
+        this->gatherAll(scalarField(UIndirectList<scalar>(myQ, sel)), start)
+    );
+    const scalarField K
+    (
+        this->gatherAll(scalarField(UIndirectList<scalar>(myK, sel)), start)
+    );
+    const labelList ids(this->gatherAll(selIds, start));
+    stats_.nGathered = x.size();
+    stats_.nParcels = returnReduce(n, sumOp<label>());
+    // Each own parcel's index in the gathered lists (-1: not gathered)
+    labelList gathered(n, -1);
+    forAll(sel, k)
+    {
+        gathered[sel[k]] = myStart + k;
+    }
     const label N = x.size();
     const labelList order(this->idOrder(ids));
 
@@ -612,10 +768,7 @@ void Foam::BemNearField<CloudType>::correct
                 {
                     return;
                 }
-                const scalar d = Foam::sqrt(r2);
-                const vector u = -r/d;      // from a to b
-                const scalar g =
-                    d - extent(S[a], R[a], u) - extent(S[b], R[b], u);
+                const scalar g = centreLineGap(S[a], R[a], S[b], R[b], r, r2);
                 const scalar aMin = min(cmptMin(S[a]), cmptMin(S[b]));
                 if (g < clusterGap_*aMin)
                 {
@@ -690,14 +843,6 @@ void Foam::BemNearField<CloudType>::correct
     vectorField Emembers(N, Zero);
     if (multipoleNeighbours_ && nC)
     {
-        scalar dMax = 0;
-        forAll(S, g)
-        {
-            if (K[g] != kappa0)
-            {
-                dMax = max(dMax, 2*cmptMax(S[g]));
-            }
-        }
         std::vector<std::set<label>> near(nC);
         forPairsWithinCutoff
         (
@@ -765,7 +910,11 @@ void Foam::BemNearField<CloudType>::correct
         i = 0;
         for (auto& p : cloud)
         {
-            p.E() += Emembers[myStart + i++];
+            const label g = gathered[i++];
+            if (g >= 0)
+            {
+                p.E() += Emembers[g];
+            }
         }
     }
 
@@ -815,7 +964,10 @@ void Foam::BemNearField<CloudType>::correct
     {
         myE[i++] = p.E();
     }
-    const vectorField E(this->gatherAll(myE, start));
+    const vectorField E
+    (
+        this->gatherAll(vectorField(UIndirectList<vector>(myE, sel)), start)
+    );
     // The isolated parcels' induced dipoles (pair terms within the dipole
     // solve's radius)
     const scalar rDipole2 =
@@ -828,7 +980,10 @@ void Foam::BemNearField<CloudType>::correct
         {
             myE[i++] = p.dipole();
         }
-        const vectorField Pd(this->gatherAll(myE, start));
+        const vectorField Pd
+        (
+            this->gatherAll(vectorField(UIndirectList<vector>(myE, sel)), start)
+        );
         forAll(multipoles, g)
         {
             if (clusterOf[g] < 0)
@@ -1257,7 +1412,7 @@ void Foam::BemNearField<CloudType>::correct
     {
         if (members.found(labelPair(p.origProc(), p.origId())))
         {
-            const label g = myStart + i;
+            const label g = gathered[i];
             const bool inContact =
                 w != 1 && p.collisionRecords().pairRecords().size();
             stats_.nInContact += inContact;
@@ -1265,10 +1420,10 @@ void Foam::BemNearField<CloudType>::correct
             p.tE() = (inContact ? w : 1)*M[g];
             p.dipole() = P[g];
         }
-        else
+        else if (gathered[i] >= 0)
         {
-            p.fE() += Fout[myStart + i];
-            p.tE() += Mout[myStart + i];
+            p.fE() += Fout[gathered[i]];
+            p.tE() += Mout[gathered[i]];
         }
         ++i;
     }
@@ -1296,6 +1451,9 @@ void Foam::BemNearField<CloudType>::info() const
         Info<< "    BEM members in contact (x chi^0.4) = "
             << stats_.nInContact << nl;
     }
+    Info<< "    BEM parcels in or near clusters = " << stats_.nGathered
+        << " of " << stats_.nParcels << " (gathered on every processor)"
+        << nl;
     Info<< "    BEM remeshing energy carried    = " << remeshOffset_ << nl;
     Info<< "    CPU time [s] since start        = dipoles " << dipoleTime_
         << ", BEM clusters " << clusterTime_ << " (set-up of meshes and"

@@ -82,6 +82,20 @@ Foam::label Foam::InducedDipoleNearField<CloudType>::readLabel
 }
 
 
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::List<Foam::boundBox>&
+Foam::InducedDipoleNearField<CloudType>::processorBoxes()
+{
+    if (boxes_.empty())
+    {
+        boxes_ = processorHalo::processorBoxes(this->owner().mesh());
+    }
+    return boxes_;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -248,24 +262,18 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     std::unique_ptr<processorHalo> halo;
     if (Pstream::parRun())
     {
-        if (boxes_.empty())
-        {
-            boxes_ = processorHalo::processorBoxes(cloud.mesh());
-        }
-        List<vector> translations;
-        if (cmptMax(L) > 0)
-        {
-            for (label a = -1; a <= 1; ++a)
-            for (label b = -1; b <= 1; ++b)
-            for (label c = -1; c <= 1; ++c)
-            {
-                if (a || b || c)
-                {
-                    translations.append(vector(a*L.x(), b*L.y(), c*L.z()));
-                }
-            }
-        }
-        halo.reset(new processorHalo(boxes_, myX, rNear_, translations));
+        halo.reset
+        (
+            new processorHalo
+            (
+                processorBoxes(),
+                myX,
+                rNear_,
+                cmptMax(L) > 0
+              ? processorHalo::boxTranslations(L)
+              : List<vector>()
+            )
+        );
         x = halo->points();
         halo->gather(q);
         halo->gather(A);
