@@ -343,10 +343,6 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
             }
         );
     }
-    else
-    {
-        dipoles.setDistribution(boolList(), nullptr, nullptr);
-    }
 
     // Pairs in contact, from the collision records (Ruan Eq. 44)
     if (contactWeight_ != 1)
@@ -380,6 +376,8 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     }
 
     dipoles.solve();
+    // The communication above refers to this call's halo
+    dipoles.setDistribution(boolList(), nullptr, nullptr);
 
     i = 0;
     for (auto& p : cloud)
