@@ -85,7 +85,8 @@ def triads():
 
 def write(case, variant):
     """variant: a key of NEAR, or dilute: multipoles with 8 more parcels
-    far from every triad (in no cluster and near none: not gathered)"""
+    far from every triad (in no cluster and near none: not gathered),
+    solved every third step"""
     lines = []
     for kappa, parcels in triads():
         for x, qw, q in parcels:
@@ -98,8 +99,10 @@ def write(case, variant):
             lines.append("                { position (%g %g %g); semiAxes (%g %g %g);"
                          " quaternion (1 0 0 0); epsilonR 10; q %g; }"
                          % (*x, *S, (1 if k % 3 else -1)*(0.5 + 0.1*k)*1e-13))
+    # dilute: solved every 3rd step, the bound charge carried in between
+    near = "nearField { type bem; solveInterval 3; }" if variant == "dilute" else NEAR[variant]
     es = ("    electrostaticsModel directCoulomb;\n"
-          "    directCoulombCoeffs { %s }\n" % NEAR["multipoles" if variant == "dilute" else variant])
+          "    directCoulombCoeffs { %s }\n" % near)
     open(os.path.join(case, "constant/cloudProperties"), "w").write(
         heldCloud.cloudProperties(es, "\n".join(lines)))
 

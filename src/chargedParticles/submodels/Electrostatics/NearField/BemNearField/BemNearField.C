@@ -260,14 +260,47 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 template<class CloudType>
 void Foam::BemNearField<CloudType>::writeState() const
 {
-    labelList ids(2*lastSigmaB_.size());
-    List<meshKey> meshes(lastSigmaB_.size());
-    List<scalarField> sigmaB(lastSigmaB_.size());
-    vectorField dipoles(lastSigmaB_.size(), Zero);
-    symmTensorField quadrupoles(lastSigmaB_.size(), Zero);
-    labelList hasMoments(lastSigmaB_.size(), 0);
+    // Every home's members (a restart may decompose differently)
+    boundChargeMap all(lastSigmaB_);
+    if (Pstream::parRun())
+    {
+        List<List<labelPair>> ids(Pstream::nProcs());
+        List<List<meshKey>> meshes(Pstream::nProcs());
+        List<List<scalarField>> values(Pstream::nProcs());
+        const label me = Pstream::myProcNo();
+        for (const auto& entry : lastSigmaB_)
+        {
+            ids[me].append(entry.first);
+            meshes[me].append(entry.second.first);
+            values[me].append(entry.second.second);
+        }
+        Pstream::gatherList(ids);
+        Pstream::scatterList(ids);
+        Pstream::gatherList(meshes);
+        Pstream::scatterList(meshes);
+        Pstream::gatherList(values);
+        Pstream::scatterList(values);
+        forAll(ids, proci)
+        {
+            forAll(ids[proci], k)
+            {
+                all.emplace
+                (
+                    ids[proci][k],
+                    std::make_pair(meshes[proci][k], values[proci][k])
+                );
+            }
+        }
+    }
+
+    labelList ids(2*all.size());
+    List<meshKey> meshes(all.size());
+    List<scalarField> sigmaB(all.size());
+    vectorField dipoles(all.size(), Zero);
+    symmTensorField quadrupoles(all.size(), Zero);
+    labelList hasMoments(all.size(), 0);
     label k = 0;
-    for (const auto& entry : lastSigmaB_)
+    for (const auto& entry : all)
     {
         ids[2*k] = entry.first.first();
         ids[2*k + 1] = entry.first.second();
@@ -295,58 +328,180 @@ void Foam::BemNearField<CloudType>::writeState() const
 
 
 template<class CloudType>
-void Foam::BemNearField<CloudType>::allGatherBoundCharge
+Foam::label Foam::BemNearField<CloudType>::homeOf(const labelPair& id)
+{
+    const uint64_t h =
+        uint64_t(id.first())*2654435761u + uint64_t(id.second())*40503u;
+    return label(h % uint64_t(Pstream::nProcs()));
+}
+
+
+template<class CloudType>
+typename Foam::BemNearField<CloudType>::boundChargeMap
+Foam::BemNearField<CloudType>::fetchBoundCharge
 (
-    std::map<labelPair, std::pair<meshKey, scalarField>>& sigmaB,
+    const List<labelPair>& members
+) const
+{
+    boundChargeMap known;
+    if (!Pstream::parRun())
+    {
+        for (const labelPair& id : members)
+        {
+            const auto iter = lastSigmaB_.find(id);
+            if (iter != lastSigmaB_.end())
+            {
+                known.insert(*iter);
+            }
+        }
+        return known;
+    }
+
+    // The ids to their homes, which answer with what they keep
+    List<DynamicList<labelPair>> asked(Pstream::nProcs());
+    for (const labelPair& id : members)
+    {
+        asked[homeOf(id)].append(id);
+    }
+    PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
+    forAll(asked, proci)
+    {
+        if (asked[proci].size())
+        {
+            UOPstream os(proci, questions);
+            os << List<labelPair>(asked[proci]);
+        }
+    }
+    labelList sizes;
+    questions.finishedSends(sizes);
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, questions);
+        const List<labelPair> ids(is);
+        DynamicList<labelPair> found;
+        DynamicList<meshKey> meshes;
+        DynamicList<scalarField> values;
+        for (const labelPair& id : ids)
+        {
+            const auto iter = lastSigmaB_.find(id);
+            if (iter != lastSigmaB_.end())
+            {
+                found.append(id);
+                meshes.append(iter->second.first);
+                values.append(iter->second.second);
+            }
+        }
+        UOPstream os(proci, answers);
+        os  << List<labelPair>(found) << List<meshKey>(meshes)
+            << List<scalarField>(values);
+    }
+    answers.finishedSends(sizes);
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, answers);
+        const List<labelPair> ids(is);
+        const List<meshKey> meshes(is);
+        const List<scalarField> values(is);
+        forAll(ids, k)
+        {
+            known.emplace(ids[k], std::make_pair(meshes[k], values[k]));
+        }
+    }
+    return known;
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::storeBoundCharge(boundChargeMap& solved)
+{
+    if (!Pstream::parRun())
+    {
+        lastSigmaB_.swap(solved);
+        return;
+    }
+    const label nProcs = Pstream::nProcs();
+    List<DynamicList<labelPair>> ids(nProcs);
+    List<DynamicList<meshKey>> meshes(nProcs);
+    List<DynamicList<scalarField>> values(nProcs);
+    for (const auto& entry : solved)
+    {
+        const label home = homeOf(entry.first);
+        ids[home].append(entry.first);
+        meshes[home].append(entry.second.first);
+        values[home].append(entry.second.second);
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(ids, proci)
+    {
+        if (ids[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os  << List<labelPair>(ids[proci]) << List<meshKey>(meshes[proci])
+                << List<scalarField>(values[proci]);
+        }
+    }
+    labelList sizes;
+    buffers.finishedSends(sizes);
+    lastSigmaB_.clear();
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, buffers);
+        const List<labelPair> got(is);
+        const List<meshKey> gotMeshes(is);
+        const List<scalarField> gotValues(is);
+        forAll(got, k)
+        {
+            lastSigmaB_.emplace
+            (
+                got[k], std::make_pair(gotMeshes[k], gotValues[k])
+            );
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::allGatherMoments
+(
     std::map<labelPair, bodyMoments>& moments
 )
 {
     const label me = Pstream::myProcNo();
-    List<labelList> ids(Pstream::nProcs());
-    List<List<meshKey>> meshes(Pstream::nProcs());
-    List<List<scalarField>> values(Pstream::nProcs());
+    List<List<labelPair>> ids(Pstream::nProcs());
     List<vectorField> dipoles(Pstream::nProcs());
     List<symmTensorField> quadrupoles(Pstream::nProcs());
-    ids[me].setSize(2*sigmaB.size());
-    meshes[me].setSize(sigmaB.size());
-    values[me].setSize(sigmaB.size());
-    dipoles[me].setSize(sigmaB.size());
-    quadrupoles[me].setSize(sigmaB.size());
-    label k = 0;
-    for (const auto& entry : sigmaB)
+    for (const auto& entry : moments)
     {
-        ids[me][2*k] = entry.first.first();
-        ids[me][2*k + 1] = entry.first.second();
-        meshes[me][k] = entry.second.first;
-        values[me][k] = entry.second.second;
-        const bodyMoments& m = moments.at(entry.first);
-        dipoles[me][k] = m.first;
-        quadrupoles[me][k] = m.second;
-        ++k;
+        ids[me].append(entry.first);
+        dipoles[me].append(entry.second.first);
+        quadrupoles[me].append(entry.second.second);
     }
     Pstream::gatherList(ids);
     Pstream::scatterList(ids);
-    Pstream::gatherList(meshes);
-    Pstream::scatterList(meshes);
-    Pstream::gatherList(values);
-    Pstream::scatterList(values);
     Pstream::gatherList(dipoles);
     Pstream::scatterList(dipoles);
     Pstream::gatherList(quadrupoles);
     Pstream::scatterList(quadrupoles);
     forAll(ids, proci)
     {
-        forAll(meshes[proci], k)
+        forAll(ids[proci], k)
         {
-            const labelPair id(ids[proci][2*k], ids[proci][2*k + 1]);
-            sigmaB.emplace
-            (
-                id,
-                std::make_pair(meshes[proci][k], values[proci][k])
-            );
             moments.emplace
             (
-                id,
+                ids[proci][k],
                 bodyMoments(dipoles[proci][k], quadrupoles[proci][k])
             );
         }
@@ -403,7 +558,10 @@ void Foam::BemNearField<CloudType>::readState()
     forAll(meshes, k)
     {
         const labelPair id(ids[2*k], ids[2*k + 1]);
-        lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
+        if (homeOf(id) == Pstream::myProcNo())
+        {
+            lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
+        }
         if (hasMoments[k])
         {
             lastMoments_.emplace(id, bodyMoments(dipoles[k], quadrupoles[k]));
@@ -1006,6 +1164,23 @@ void Foam::BemNearField<CloudType>::correct
     std::map<labelPair, std::pair<meshKey, scalarField>> sigmaB;
     std::map<labelPair, bodyMoments> moments;
     scalar remeshDelta = 0;
+    // The last bound charge of the members of the clusters this processor
+    // solves (the round-robin below), from their homes
+    DynamicList<labelPair> mine;
+    {
+        label c = -1;
+        for (const auto& cl : clusters)
+        {
+            if (++c % Pstream::nProcs() == Pstream::myProcNo())
+            {
+                for (const label g : cl.second)
+                {
+                    mine.append(labelPair(ids[2*g], ids[2*g + 1]));
+                }
+            }
+        }
+    }
+    const boundChargeMap known(fetchBoundCharge(mine));
     label clusterI = -1;
     for (const auto& c : clusters)
     {
@@ -1063,9 +1238,9 @@ void Foam::BemNearField<CloudType>::correct
             // a gap or a direction oscillating about a level's edge does
             // not remesh (and re-solve) every step
             const auto last =
-                lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
+                known.find(labelPair(ids[2*g], ids[2*g + 1]));
             bool keep = false;
-            if (last != lastSigmaB_.end())
+            if (last != known.end())
             {
                 const meshKey& k = last->second.first;
                 keep =
@@ -1161,10 +1336,10 @@ void Foam::BemNearField<CloudType>::correct
                     bem_->addParticle(meshes[m], x[g], poses[m], K[g], q[g]);
                 bem_->setParticleField(k, Eext[m]);
                 const auto last =
-                    lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
+                    known.find(labelPair(ids[2*g], ids[2*g + 1]));
                 if
                 (
-                    last != lastSigmaB_.end()
+                    last != known.end()
                  && last->second.first == shapeKeys_[meshes[m]]
                 )
                 {
@@ -1274,10 +1449,10 @@ void Foam::BemNearField<CloudType>::correct
         {
             const label g = mem[m];
             const auto last =
-                lastSigmaB_.find(labelPair(ids[2*g], ids[2*g + 1]));
+                known.find(labelPair(ids[2*g], ids[2*g + 1]));
             if
             (
-                last != lastSigmaB_.end()
+                last != known.end()
              && last->second.first != shapeKeys_[shapes[m]]
             )
             {
@@ -1390,11 +1565,11 @@ void Foam::BemNearField<CloudType>::correct
         reduce(stats_.energy, sumOp<scalar>());
         reduce(stats_.nSolved, sumOp<label>());
         reduce(remeshDelta, sumOp<scalar>());
-        allGatherBoundCharge(sigmaB, moments);
+        allGatherMoments(moments);
     }
     remeshOffset_ += remeshDelta;
     gmresIterationsTotal_ += stats_.gmresIterations;
-    lastSigmaB_.swap(sigmaB);
+    storeBoundCharge(sigmaB);
     usedMoments_.swap(lastMoments_);
     lastMoments_.swap(moments);
     trimCache();
