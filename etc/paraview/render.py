@@ -64,6 +64,13 @@ def die(msg):
     raise RenderError(msg)
 
 
+def say(fd, line):
+    """A line to the process's stdout (fd 1) or stderr (2) directly:
+    pvbatch's Python streams do not reach a redirected stdout unless
+    PYTHONUNBUFFERED is set, and the script ends with os._exit"""
+    os.write(fd, (line + "\n").encode())
+
+
 def is_time(name):
     try:
         float(name)
@@ -532,11 +539,11 @@ def render_case(caseArg, args, one):
     info["renderSeconds"] = round(time.time() - t0, 2)
     with open(os.path.join(case, name + ".render.json"), "w") as f:
         json.dump(info, f, indent=2)
-    print("render: %s  (t = %g s, %d parcels, q %.4g .. %.4g C%s%s; state %s; %.1f s)"
-          % (os.path.relpath(png), tValue, nParcels, qmin, qmax,
-             ", %s %.4g .. %.4g" % (fieldInfo["label"], *fieldInfo["range"]) if fieldInfo else "",
-             ", ellipsoids x%g" % scale if scale != 1 else "",
-             os.path.relpath(pvsm), time.time() - t0))
+    say(1, "render: %s  (t = %g s, %d parcels, q %.4g .. %.4g C%s%s; state %s; %.1f s)"
+        % (os.path.relpath(png), tValue, nParcels, qmin, qmax,
+           ", %s %.4g .. %.4g" % (fieldInfo["label"], *fieldInfo["range"]) if fieldInfo else "",
+           ", ellipsoids x%g" % scale if scale != 1 else "",
+           os.path.relpath(pvsm), time.time() - t0))
     ResetSession()
 
 
@@ -629,7 +636,7 @@ def main():
         try:
             render_case(c, args, len(args.cases) == 1)
         except RenderError as e:
-            print("render: ERROR: %s" % e, file=sys.stderr)
+            say(2, "render: ERROR: %s" % e)
             failed += 1
             ResetSession()
     return failed
@@ -638,7 +645,7 @@ def main():
 try:
     status = 3 if main() else 0    # 3: the wrapper does not retry these
 except RenderError as e:
-    print("render: ERROR: %s" % e, file=sys.stderr)
+    say(2, "render: ERROR: %s" % e)
     status = 3
 sys.stdout.flush()
 sys.stderr.flush()
