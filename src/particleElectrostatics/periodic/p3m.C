@@ -718,10 +718,13 @@ void Foam::p3m::realSpace
 (
     const UList<point>& xw,
     const UList<scalar>& q,
-    UList<vector>& f
+    UList<vector>& f,
+    const label nOwn
 ) const
 {
     const label N = xw.size();
+    // Pairs of two copies (a halo's) give nothing this processor keeps
+    const label nKept = nOwn < 0 ? N : nOwn;
     const scalar rc = p_.rCut, rc2 = rc*rc;
     const scalar a = p_.alpha;
     const scalar c2 = 2*a/Foam::sqrt(pi);
@@ -789,7 +792,7 @@ void Foam::p3m::realSpace
             {
                 const vector r = minImage(xw[i] - xw[j]);
                 const scalar r2 = magSqr(r);
-                if (r2 >= rc2) continue;
+                if (r2 >= rc2 || (i >= nKept && j >= nKept)) continue;
                 if (r2 == 0)
                 {
                     FatalErrorInFunction
@@ -825,6 +828,7 @@ void Foam::p3m::realSpace
     }
     std::vector<scalar> xs(N), ys(N), zs(N), qs(N), fx(N, 0), fy(N, 0),
         fz(N, 0);
+    std::vector<label> kept(N);
     for (label s = 0; s < N; ++s)
     {
         const label i = order[s];
@@ -832,6 +836,7 @@ void Foam::p3m::realSpace
         ys[s] = xw[i].y();
         zs[s] = xw[i].z();
         qs[s] = q[i];
+        kept[s] = i < nKept;
     }
 
     // Half stencil (each neighbour pair of cells once) + the own cell
@@ -895,6 +900,7 @@ void Foam::p3m::realSpace
         for (label s = s0; s < s1; ++s)
         {
             const scalar xi = xs[s], yi = ys[s], zi = zs[s], qi = qs[s];
+            const label keptI = kept[s];
             label m = 0;
             for (label t = s + 1; t < s1; ++t)
             {
@@ -902,7 +908,7 @@ void Foam::p3m::realSpace
                     dz = zi - zs[t];
                 const scalar r2 = dx*dx + dy*dy + dz*dz;
                 bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz; br[m] = r2;
-                m += (r2 < rc2);
+                m += (r2 < rc2) & (keptI | kept[t]);
             }
             for (label k = 0; k < nSt; ++k)
             {
@@ -915,7 +921,7 @@ void Foam::p3m::realSpace
                     const scalar r2 = dx*dx + dy*dy + dz*dz;
                     bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz;
                     br[m] = r2;
-                    m += (r2 < rc2);
+                    m += (r2 < rc2) & (keptI | kept[t]);
                 }
             }
 
@@ -1278,7 +1284,7 @@ void Foam::p3m::computeDistributed
     nLocal_ = nLocal;
     nHalo_ = xh.size() - nLocal;
     List<vector> fh(xh.size(), Zero);
-    realSpace(xh, qh, fh);
+    realSpace(xh, qh, fh, nLocal);
     forAll(f, i)
     {
         f[i] = fh[i];
