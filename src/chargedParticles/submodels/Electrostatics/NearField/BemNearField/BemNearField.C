@@ -111,6 +111,40 @@ inline label root(labelList& parent, label i)
     return i;
 }
 
+//- Every processor's entries of a map by parcel id on every processor
+//  (an entry's id is held by one processor). Collective
+template<class First, class Second>
+void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
+{
+    const label me = Pstream::myProcNo();
+    List<List<labelPair>> ids(Pstream::nProcs());
+    List<List<First>> firsts(Pstream::nProcs());
+    List<List<Second>> seconds(Pstream::nProcs());
+    for (const auto& entry : m)
+    {
+        ids[me].append(entry.first);
+        firsts[me].append(entry.second.first);
+        seconds[me].append(entry.second.second);
+    }
+    Pstream::gatherList(ids);
+    Pstream::scatterList(ids);
+    Pstream::gatherList(firsts);
+    Pstream::scatterList(firsts);
+    Pstream::gatherList(seconds);
+    Pstream::scatterList(seconds);
+    forAll(ids, proci)
+    {
+        forAll(ids[proci], k)
+        {
+            m.emplace
+            (
+                ids[proci][k],
+                std::make_pair(firsts[proci][k], seconds[proci][k])
+            );
+        }
+    }
+}
+
 } // End namespace bemNearFieldDetail
 } // End namespace Foam
 
@@ -264,33 +298,7 @@ void Foam::BemNearField<CloudType>::writeState() const
     boundChargeMap all(lastSigmaB_);
     if (Pstream::parRun())
     {
-        List<List<labelPair>> ids(Pstream::nProcs());
-        List<List<meshKey>> meshes(Pstream::nProcs());
-        List<List<scalarField>> values(Pstream::nProcs());
-        const label me = Pstream::myProcNo();
-        for (const auto& entry : lastSigmaB_)
-        {
-            ids[me].append(entry.first);
-            meshes[me].append(entry.second.first);
-            values[me].append(entry.second.second);
-        }
-        Pstream::gatherList(ids);
-        Pstream::scatterList(ids);
-        Pstream::gatherList(meshes);
-        Pstream::scatterList(meshes);
-        Pstream::gatherList(values);
-        Pstream::scatterList(values);
-        forAll(ids, proci)
-        {
-            forAll(ids[proci], k)
-            {
-                all.emplace
-                (
-                    ids[proci][k],
-                    std::make_pair(meshes[proci][k], values[proci][k])
-                );
-            }
-        }
+        bemNearFieldDetail::allGatherEntries(all);
     }
 
     labelList ids(2*all.size());
@@ -467,42 +475,6 @@ void Foam::BemNearField<CloudType>::storeBoundCharge(boundChargeMap& solved)
             lastSigmaB_.emplace
             (
                 got[k], std::make_pair(gotMeshes[k], gotValues[k])
-            );
-        }
-    }
-}
-
-
-template<class CloudType>
-void Foam::BemNearField<CloudType>::allGatherMoments
-(
-    std::map<labelPair, bodyMoments>& moments
-)
-{
-    const label me = Pstream::myProcNo();
-    List<List<labelPair>> ids(Pstream::nProcs());
-    List<vectorField> dipoles(Pstream::nProcs());
-    List<symmTensorField> quadrupoles(Pstream::nProcs());
-    for (const auto& entry : moments)
-    {
-        ids[me].append(entry.first);
-        dipoles[me].append(entry.second.first);
-        quadrupoles[me].append(entry.second.second);
-    }
-    Pstream::gatherList(ids);
-    Pstream::scatterList(ids);
-    Pstream::gatherList(dipoles);
-    Pstream::scatterList(dipoles);
-    Pstream::gatherList(quadrupoles);
-    Pstream::scatterList(quadrupoles);
-    forAll(ids, proci)
-    {
-        forAll(ids[proci], k)
-        {
-            moments.emplace
-            (
-                ids[proci][k],
-                bodyMoments(dipoles[proci][k], quadrupoles[proci][k])
             );
         }
     }
@@ -1565,7 +1537,7 @@ void Foam::BemNearField<CloudType>::correct
         reduce(stats_.energy, sumOp<scalar>());
         reduce(stats_.nSolved, sumOp<label>());
         reduce(remeshDelta, sumOp<scalar>());
-        allGatherMoments(moments);
+        bemNearFieldDetail::allGatherEntries(moments);
     }
     remeshOffset_ += remeshDelta;
     gmresIterationsTotal_ += stats_.gmresIterations;
