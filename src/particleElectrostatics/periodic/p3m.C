@@ -1252,6 +1252,13 @@ void Foam::p3m::computeDistributed
     }
 
     checkInput(x, q);
+    if (boxes.size() != Pstream::nProcs())
+    {
+        FatalErrorInFunction
+            << "computeDistributed needs every processor's box: "
+            << boxes.size() << " boxes for " << Pstream::nProcs()
+            << " processors" << exit(FatalError);
+    }
     const label nLocal = x.size();
     f.setSize(nLocal);
     f = Zero;
