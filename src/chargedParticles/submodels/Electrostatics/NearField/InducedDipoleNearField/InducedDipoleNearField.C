@@ -288,7 +288,6 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         ids[2*k] = keys[k].first();
         ids[2*k + 1] = keys[k].second();
     }
-    const label myStart = 0;
     const labelList order(this->idOrder(ids));
     labelList rank(N);
     forAll(order, k)
@@ -356,7 +355,7 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         i = 0;
         for (const auto& p : cloud)
         {
-            const label gi = rank[myStart + i];
+            const label gi = rank[i];
             for (const auto& record : p.collisionRecords().pairRecords())
             {
                 const auto iter = where.cfind
@@ -382,7 +381,7 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
     i = 0;
     for (auto& p : cloud)
     {
-        const label g = rank[myStart + i];
+        const label g = rank[i];
         p.E() = dipoles.fields()[g];
         p.fE() += dipoles.forceIncrements()[g];
         p.tE() = dipoles.torques()[g];
