@@ -332,12 +332,12 @@ $PY "$tools/compareClouds.py" "$work/attraction5/0.0035" "$work/restart5/0.0035"
 # each other). Kinetic + contact elastic +
 # electrostatic energy (the log's books, the cluster's BEM energy Eq. 51
 # included) against its change, relative to the largest change of the
-# electrostatic energy: at the end of the run (after the bounce, 1e-3) and
-# the largest on the way (2e-3). The BEM force is the gradient of the books'
-# energy only to the discretisation error: the books differ from the
-# forces' potential by a function of the gap (1.2e-3 at contact with the
-# default 1200 patches per parcel, reversible, halving the time step does
-# not change it), not by a secular drift.
+# electrostatic energy: at the end of the run (after the bounce) and the
+# largest on the way, both within 1e-3. The
+# BEM force is the gradient of the books' energy only to the
+# discretisation error, a reversible function of the gap; the energy's
+# bound-charge part by reciprocity (bemSolver) keeps it to a few 1e-4
+# with the default 1200 patches per parcel.
 for bodies in 2 3
 do
 copyCase reducedStiffness "$work/energy$bodies"
@@ -377,11 +377,11 @@ final = abs(E[-1] - E[0])/dU
 contacts = len(re.findall(r"particle-particle\s*=\s*1,", log))
 bem = len(re.findall(r"BEM clusters\s*=\s*1 \(2 parcels", log))
 parcels = re.findall(r"Current number of parcels\s*=\s*(\d+)", log)
-ok = (final < 1e-3 and drift < 2e-3 and contacts > 0 and bem >= n - 1
+ok = (final < 1e-3 and drift < 1e-3 and contacts > 0 and bem >= n - 1
       and parcels and int(parcels[-1]) == bodies)
 print("%s: bemClusters.energy%s (e = 1, mu = 0, %d spheres epsilonR 10, two through a contact%s:"
       " total energy at the end %.2e of the electrostatic energy change %.3e J (tol 1e-3), largest"
-      " %.2e (tol 2e-3); %d steps in contact, %d of %d with the pair in a BEM cluster)"
+      " %.2e (tol 1e-3); %d steps in contact, %d of %d with the pair in a BEM cluster)"
       % ("PASS" if ok else "FAIL", "" if bodies == 2 else "3", bodies,
          "" if bodies == 2 else ", the third near them", final, dU, drift, contacts, bem, n))
 PYEOF

@@ -572,6 +572,127 @@ void Foam::bemSolver::applyPrecond(const scalarField& x, scalarField& y) const
 }
 
 
+Foam::scalarField Foam::bemSolver::freePotential
+(
+    const scalarField& sigmaF
+) const
+{
+    const label N = x_.size();
+    const label np = particles_.size();
+    const scalar c4pi = 1/(4*pi);
+    scalarField phi(N, Zero);
+
+    // Per source particle: its free charge, and its quadrature points in
+    // the world frame where needed (a uniformly charged ellipsoid)
+    scalarField Qf(np, Zero);
+    List<pointField> quadWorld(np);
+    for (label s = 0; s < np; ++s)
+    {
+        const particle& ps = particles_[s];
+        const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
+        for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+        {
+            Qf[s] += a_[j]*sigmaF[j];
+        }
+        // (empty for spheres: their exact monopole below)
+        const bool sphere = cmptMin(ms.semiAxes()) == cmptMax(ms.semiAxes());
+        if (ps.uniformF && !sphere && Qf[s] != 0)
+        {
+            quadWorld[s] = ps.centre + (ps.R & ms.quadPoints());
+        }
+    }
+
+    const bool direct = !(fastSum_ && N > ctrl_.directOutputMax);
+    if (!direct)
+    {
+        // The fast sum's point kernel for all; own uniform densities and
+        // sphere monopoles are not separated at this size
+        vectorField Eall;
+        fastSum_->evaluate(a_*sigmaF, x_, true, Eall, &phi);
+    }
+
+    for (label p = 0; p < np; ++p)
+    {
+        const particle& pt = particles_[p];
+        const scalarField* unit =
+            pt.uniformF && direct ? &shapes_[pt.shape]->unitPotential : nullptr;
+        for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+        {
+            scalar pot = 0;
+            for (label s = 0; s < np && direct; ++s)
+            {
+                const particle& ps = particles_[s];
+                if (s == p)
+                {
+                    if (unit)
+                    {
+                        pot += sigmaF[i]*(*unit)[i - offset_[p]];
+                        continue;
+                    }
+                }
+                else if (Qf[s] == 0 && ps.uniformF)
+                {
+                    continue;
+                }
+                else if (ps.uniformF && quadWorld[s].empty())
+                {
+                    // A uniformly charged sphere: exact (Q/r outside,
+                    // Q/R inside an overlap)
+                    pot += c4pi*Qf[s]/max
+                    (
+                        mag(x_[i] - ps.centre),
+                        mesh(ps.shape).semiAxes().x()
+                    );
+                    continue;
+                }
+                else if (ps.uniformF)
+                {
+                    const scalar sf = sigmaF[offset_[s]];
+                    const scalarField& w = mesh(ps.shape).quadWeights();
+                    const pointField& y = quadWorld[s];
+                    scalar sum = 0;
+                    forAll(y, l)
+                    {
+                        sum += w[l]/mag(x_[i] - y[l]);
+                    }
+                    pot += c4pi*sf*sum;
+                    continue;
+                }
+                // Point kernel (near corrections below)
+                for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+                {
+                    if (j != i)
+                    {
+                        pot += c4pi*a_[j]*sigmaF[j]/mag(x_[i] - x_[j]);
+                    }
+                }
+            }
+            if (!unit)
+            {
+                pot += selfP_[i]*sigmaF[i];
+            }
+            for (const nearEntry& e : near_[i])
+            {
+                const label s = owner_[e.j];
+                const bool pointKernel =
+                    !direct
+                 || (s == p ? !unit : !particles_[s].uniformF);
+                if (pointKernel)
+                {
+                    pot += sigmaF[e.j]*e.P;
+                }
+            }
+            forAll(pcX_, k)
+            {
+                pot += c4pi*pcQ_[k]/kappa0_/mag(x_[i] - pcX_[k]);
+            }
+            phi[i] += pot;
+        }
+    }
+    return phi;
+}
+
+
 void Foam::bemSolver::computeOutputs()
 {
     const label N = x_.size();
@@ -589,22 +710,18 @@ void Foam::bemSolver::computeOutputs()
     }
     sigmaT = sigmaFall + sigmaB_;
     const scalarField q(a_*sigmaT);
+    const scalarField qF(a_*sigmaFall);
 
-    // eps0 E of all other particles' surface charges, eps0 psi of all
+    // eps0 E of all other particles' surface charges at each patch
     vectorField E(N, Zero);
-    scalarField phi(N, Zero);
     if (fastSum_ && N > ctrl_.directOutputMax)
     {
-        // Field of the other particles (exact exclusion), potential of all
-        vectorField Eall;
-        fieldOfAll(q, Eall, &phi);
         fastSum_->evaluateOthers(q, E, nullptr);
     }
     else
     {
         // Direct sums by blocks of (target, source) particles, branch-free
-        // inner loops on separate coordinate arrays (vectorised); the
-        // potential (energy, Eq. 51) only on particles with free charge
+        // inner loops on separate coordinate arrays (vectorised)
         scalarField X(N), Y(N), Z(N);
         for (label j = 0; j < N; ++j)
         {
@@ -614,52 +731,28 @@ void Foam::bemSolver::computeOutputs()
         }
         for (label p = 0; p < np; ++p)
         {
-            bool charged = false;
-            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
-            {
-                charged = charged || sigmaFall[i] != 0;
-            }
             for (label i = offset_[p]; i < offset_[p + 1]; ++i)
             {
                 const scalar xi = X[i], yi = Y[i], zi = Z[i];
-                scalar ex = 0, ey = 0, ez = 0, pot = 0;
+                scalar ex = 0, ey = 0, ez = 0;
                 for (label s = 0; s < np; ++s)
                 {
-                    const label j0 = offset_[s], j1 = offset_[s + 1];
-                    if (s != p)
+                    if (s == p) continue;
+                    #pragma omp simd reduction(+:ex, ey, ez)
+                    for (label j = offset_[s]; j < offset_[s + 1]; ++j)
                     {
-                        #pragma omp simd reduction(+:ex, ey, ez, pot)
-                        for (label j = j0; j < j1; ++j)
-                        {
-                            const scalar dx = xi - X[j];
-                            const scalar dy = yi - Y[j];
-                            const scalar dz = zi - Z[j];
-                            const scalar rInv =
-                                1/std::sqrt(dx*dx + dy*dy + dz*dz);
-                            const scalar qr = q[j]*rInv;
-                            const scalar qr3 = qr*rInv*rInv;
-                            pot += qr;
-                            ex += qr3*dx;
-                            ey += qr3*dy;
-                            ez += qr3*dz;
-                        }
-                    }
-                    else if (charged)
-                    {
-                        // Own patches: potential only, without i itself
-                        #pragma omp simd reduction(+:pot)
-                        for (label j = j0; j < j1; ++j)
-                        {
-                            const scalar dx = xi - X[j];
-                            const scalar dy = yi - Y[j];
-                            const scalar dz = zi - Z[j];
-                            const scalar r2 = dx*dx + dy*dy + dz*dz;
-                            pot += (j == i ? 0 : q[j]/std::sqrt(r2 + (j == i)));
-                        }
+                        const scalar dx = xi - X[j];
+                        const scalar dy = yi - Y[j];
+                        const scalar dz = zi - Z[j];
+                        const scalar rInv =
+                            1/std::sqrt(dx*dx + dy*dy + dz*dz);
+                        const scalar qr3 = q[j]*rInv*rInv*rInv;
+                        ex += qr3*dx;
+                        ey += qr3*dy;
+                        ez += qr3*dz;
                     }
                 }
                 E[i] = c4pi*vector(ex, ey, ez);
-                phi[i] = c4pi*pot;
             }
         }
     }
@@ -667,21 +760,28 @@ void Foam::bemSolver::computeOutputs()
     {
         for (const nearEntry& e : near_[i])
         {
-            phi[i] += sigmaT[e.j]*e.P;
             if (owner_[e.j] != owner_[i])
             {
                 E[i] += sigmaT[e.j]*e.V;
             }
         }
-        phi[i] += selfP_[i]*sigmaT[i];
         forAll(pcX_, k)
         {
             const vector d = x_[i] - pcX_[k];
             const scalar r = mag(d);
             E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
-            phi[i] += c4pi*pcQ_[k]/kappa0_/r;
         }
     }
+
+    for (const particle& pt : particles_)
+    {
+        shapeData& sd = *shapes_[pt.shape];
+        if (pt.uniformF && sd.unitPotential.empty())
+        {
+            sd.unitPotential = sd.mesh->unitPotential();
+        }
+    }
+    const scalarField phi(freePotential(sigmaFall));
 
     force_.setSize(np);
     torque_.setSize(np);
@@ -699,13 +799,13 @@ void Foam::bemSolver::computeOutputs()
             const vector dF = kappa0_*q[i]*Ei;      // Eq. 11a
             F += dF;
             M += (x_[i] - particles_[p].centre) ^ dF; // Eq. 11b
-            energy_ += 0.5*a_[i]*sigmaFall[i]*phi[i]/eps0;   // Eq. 51
+            energy_ += 0.5*q[i]*phi[i]/eps0;   // Eq. 51 (reciprocal)
         }
         force_[p] = F;
         torque_[p] = M;
     }
 
-    // Free point charges: 1/2 q psi(x_k), near patches by quadrature
+    // Free point charges: 1/2 q psi_f(x_k), near patches by quadrature
     forAll(pcX_, k)
     {
         scalar psi = 0;
@@ -725,12 +825,12 @@ void Foam::bemSolver::computeOutputs()
                 {
                     const label l = ellipsoidSurfaceMesh::nQuad*kj + qi;
                     const point y = pj.centre + (pj.R & mj.quadPoints()[l]);
-                    psi += sigmaT[j]*mj.quadWeights()[l]/mag(pcX_[k] - y);
+                    psi += sigmaFall[j]*mj.quadWeights()[l]/mag(pcX_[k] - y);
                 }
             }
             else
             {
-                psi += q[j]/r;
+                psi += qF[j]/r;
             }
         }
         forAll(pcX_, l)
@@ -941,7 +1041,8 @@ Foam::label Foam::bemSolver::addParticle
             << "rotation tensor " << R << " is not proper orthogonal"
             << exit(FatalError);
     }
-    particles_.push_back({shapeI, centre, R, kappaP, sigmaF});
+    const bool uniform = sigmaF.empty() || min(sigmaF) == max(sigmaF);
+    particles_.push_back({shapeI, centre, R, kappaP, sigmaF, uniform});
     particleE_.append(Zero);
     initialGuess_.append(scalarField());
     assembled_ = false;
@@ -1316,7 +1417,8 @@ Foam::scalar Foam::bemSolver::shapeBytes(const label shapeI) const
     const label n = sd->mesh->size();
     // Mesh: centres, normals, areas, curvatures, 16 quadrature points and
     // weights per patch, vertices and faces (about 600 bytes per patch)
-    scalar bytes = 600.0*n + 8.0*sd->selfGauss.size();
+    scalar bytes =
+        600.0*n + 8.0*sd->selfGauss.size() + 8.0*sd->unitPotential.size();
     for (const auto& near : sd->nearBody)
     {
         bytes += sizeof(nearEntry)*near.capacity() + sizeof(near);
