@@ -1374,7 +1374,6 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     binCells();
     localBb_ = boundBox(mesh.points(), false);
     localBb_.inflate(1e-6);
-    processorBoxes_ = processorHalo::processorBoxes(mesh);
 
     if (correction_ == correctionType::shaped)
     {
@@ -1574,7 +1573,10 @@ void Foam::meshPoisson::update
     (
         new processorHalo
         (
-            processorBoxes_, x, haloRange(), periodicTranslations()
+            processorHalo::processorBoxes(mesh_),
+            x,
+            haloRange(),
+            periodicTranslations()
         )
     );
     const pointField& xK = halo_->points();

@@ -6,19 +6,52 @@
 #include "polyMesh.H"
 #include "Pstream.H"
 #include "UIndirectList.H"
+#include "MeshObject.H"
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
-Foam::List<Foam::boundBox> Foam::processorHalo::processorBoxes
+namespace Foam
+{
+
+//- The processors' boxes, kept with the mesh (one exchange per mesh; a
+//  GeometricMeshObject is destroyed when the points move)
+class processorMeshBoxes
+:
+    public MeshObject<polyMesh, GeometricMeshObject, processorMeshBoxes>
+{
+    List<boundBox> boxes_;
+
+public:
+
+    TypeName("processorMeshBoxes");
+
+    explicit processorMeshBoxes(const polyMesh& mesh)
+    :
+        MeshObject<polyMesh, GeometricMeshObject, processorMeshBoxes>(mesh),
+        boxes_(Pstream::nProcs())
+    {
+        boxes_[Pstream::myProcNo()] = boundBox(mesh.points(), false);
+        Pstream::gatherList(boxes_);
+        Pstream::scatterList(boxes_);
+    }
+
+    const List<boundBox>& boxes() const
+    {
+        return boxes_;
+    }
+};
+
+defineTypeNameAndDebug(processorMeshBoxes, 0);
+
+} // End namespace Foam
+
+
+const Foam::List<Foam::boundBox>& Foam::processorHalo::processorBoxes
 (
     const polyMesh& mesh
 )
 {
-    List<boundBox> boxes(Pstream::nProcs());
-    boxes[Pstream::myProcNo()] = boundBox(mesh.points(), false);
-    Pstream::gatherList(boxes);
-    Pstream::scatterList(boxes);
-    return boxes;
+    return processorMeshBoxes::New(mesh).boxes();
 }
 
 

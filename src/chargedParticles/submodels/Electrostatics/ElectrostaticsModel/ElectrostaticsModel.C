@@ -166,11 +166,10 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
     }
 
     // The range is the same on every processor (no boxes without a halo)
+    const List<boundBox> none;
     const processorHalo halo
     (
-        range > 0
-      ? processorHalo::processorBoxes(this->owner().mesh())
-      : List<boundBox>(),
+        range > 0 ? processorHalo::processorBoxes(this->owner().mesh()) : none,
         xLocal,
         range
     );

@@ -151,11 +151,6 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
 {
     reportTimeStep();
 
-    if (Pstream::parRun() && boxes_.empty())
-    {
-        boxes_ = processorHalo::processorBoxes(this->owner().mesh());
-    }
-
     // This processor's parcels: the kernel exchanges what it needs
     pointField x(this->owner().size());
     scalarField q(x.size());
@@ -167,8 +162,14 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
         ++i;
     }
 
+    // Every processor's box (the halo's); none in serial
+    const List<boundBox> serial;
+    const List<boundBox>& boxes =
+        Pstream::parRun()
+      ? processorHalo::processorBoxes(this->owner().mesh())
+      : serial;
     List<vector> f;
-    kernel_->computeDistributed(x, q, boxes_, f);
+    kernel_->computeDistributed(x, q, boxes, f);
     if (!infoWritten_)
     {
         infoWritten_ = true;

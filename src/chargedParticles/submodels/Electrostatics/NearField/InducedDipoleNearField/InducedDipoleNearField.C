@@ -82,20 +82,6 @@ Foam::label Foam::InducedDipoleNearField<CloudType>::readLabel
 }
 
 
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
-
-template<class CloudType>
-const Foam::List<Foam::boundBox>&
-Foam::InducedDipoleNearField<CloudType>::processorBoxes()
-{
-    if (boxes_.empty())
-    {
-        boxes_ = processorHalo::processorBoxes(this->owner().mesh());
-    }
-    return boxes_;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -266,7 +252,7 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         (
             new processorHalo
             (
-                processorBoxes(),
+                processorHalo::processorBoxes(this->owner().mesh()),
                 myX,
                 rNear_,
                 cmptMax(L) > 0
