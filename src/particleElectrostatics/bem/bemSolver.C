@@ -178,6 +178,25 @@ void Foam::bemSolver::nearCorrection
 }
 
 
+Foam::scalar Foam::bemSolver::distanceBelow
+(
+    const label p,
+    const point& y
+) const
+{
+    // a_min (|S^-1 R^T (y - c)| - 1): the triangle inequality of the norm
+    // |S^-1 .| (patch centres lie on the surface)
+    const particle& pt = particles_[p];
+    const vector& s = mesh(pt.shape).semiAxes();
+    const vector yb = pt.R.T() & (y - pt.centre);
+    return cmptMin(s)*
+    (
+        Foam::sqrt(sqr(yb.x()/s.x()) + sqr(yb.y()/s.y()) + sqr(yb.z()/s.z()))
+      - 1
+    );
+}
+
+
 void Foam::bemSolver::assemble()
 {
     const scalar t0 = now();
@@ -274,20 +293,6 @@ void Foam::bemSolver::assemble()
             rMaxOf[owner_[i]] =
                 max(rMaxOf[owner_[i]], ctrl_.nearFactor*Foam::sqrt(a_[i]));
         }
-        auto distanceBelow = [this](const label p, const point& y)
-        {
-            const particle& pt = particles_[p];
-            const vector& s = mesh(pt.shape).semiAxes();
-            const vector yb = pt.R.T() & (y - pt.centre);
-            return cmptMin(s)*
-            (
-                Foam::sqrt
-                (
-                    sqr(yb.x()/s.x()) + sqr(yb.y()/s.y()) + sqr(yb.z()/s.z())
-                )
-              - 1
-            );
-        };
         // Round-off of the centres' projection onto the surface
         const scalar slack = 1 + 1e-9;
         pointField qpw(ellipsoidSurfaceMesh::nQuad);
@@ -572,22 +577,70 @@ void Foam::bemSolver::applyPrecond(const scalarField& x, scalarField& y) const
 }
 
 
-Foam::scalarField Foam::bemSolver::freePotential
+bool Foam::bemSolver::isSphere(const label p) const
+{
+    const vector& S = mesh(particles_[p].shape).semiAxes();
+    return cmptMin(S) == cmptMax(S);
+}
+
+
+void Foam::bemSolver::freeSources
 (
-    const scalarField& sigmaF
+    const scalarField& sigmaF,
+    scalarField& w,
+    vectorField& shift
 ) const
 {
-    const label N = x_.size();
+    const label nQ = ellipsoidSurfaceMesh::nQuad;
+    w = a_*sigmaF;
+    shift.setSize(x_.size());
+    shift = Zero;
+    for (label s = 0; s < label(particles_.size()); ++s)
+    {
+        const particle& ps = particles_[s];
+        if (!ps.uniformF)
+        {
+            continue;
+        }
+        const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
+        if (isSphere(s))
+        {
+            // A sphere: its exact monopole (addFreePotential)
+            SubList<scalar>(w, ms.size(), offset_[s]) = 0;
+            continue;
+        }
+        forAll(ms.quadPoints(), l)
+        {
+            shift[offset_[s] + l/nQ] +=
+                ms.quadWeights()[l]*(ps.R & ms.quadPoints()[l]);
+        }
+        for (label k = 0; k < ms.size(); ++k)
+        {
+            const label j = offset_[s] + k;
+            shift[j] = ps.centre + shift[j]/a_[j] - x_[j];
+        }
+    }
+}
+
+
+void Foam::bemSolver::addFreePotential
+(
+    const scalarField& sigmaF,
+    const vectorField* shift,
+    scalarField& phi
+) const
+{
+    const bool pointKernelOnly = !shift;
     const label np = particles_.size();
     const scalar c4pi = 1/(4*pi);
-    scalarField phi(N, Zero);
+    const label nQ = ellipsoidSurfaceMesh::nQuad;
 
-    // Per source particle: its free charge, and where needed (a uniformly
-    // charged ellipsoid) its quadrature points and its patches' centres of
-    // charge (curved patches: below the collocation points) in the world
-    // frame
-    scalarField Qf(np, Zero);
-    List<pointField> quadWorld(np), chargeCentre(np);
+    // Per source particle: its free charge; a uniformly charged
+    // ellipsoid's quadrature points and the reach of its quadrature (4
+    // patch sizes; 4.2: the centres of charge lie a little below the
+    // surface)
+    scalarField Qf(np, Zero), reach(np, Zero);
+    List<pointField> quadWorld(np);
     for (label s = 0; s < np; ++s)
     {
         const particle& ps = particles_[s];
@@ -596,57 +649,39 @@ Foam::scalarField Foam::bemSolver::freePotential
         {
             Qf[s] += a_[j]*sigmaF[j];
         }
-        // (empty for spheres: their exact monopole below)
-        const bool sphere = cmptMin(ms.semiAxes()) == cmptMax(ms.semiAxes());
-        if (ps.uniformF && !sphere && Qf[s] != 0)
+        if (!pointKernelOnly && ps.uniformF && !isSphere(s) && Qf[s] != 0)
         {
-            const label nQ = ellipsoidSurfaceMesh::nQuad;
             quadWorld[s] = ps.centre + (ps.R & ms.quadPoints());
-            chargeCentre[s].setSize(ms.size(), Zero);
-            forAll(ms.quadPoints(), l)
-            {
-                chargeCentre[s][l/nQ] += ms.quadWeights()[l]*quadWorld[s][l];
-            }
-            chargeCentre[s] /= ms.areas();
+            reach[s] = 4.2*Foam::sqrt(max(ms.areas()));
         }
-    }
-
-    const bool direct = !(fastSum_ && N > ctrl_.directOutputMax);
-    if (!direct)
-    {
-        // The fast sum's point kernel for all; own uniform densities and
-        // sphere monopoles are not separated at this size
-        vectorField Eall;
-        fastSum_->evaluate(a_*sigmaF, x_, true, Eall, &phi);
     }
 
     for (label p = 0; p < np; ++p)
     {
         const particle& pt = particles_[p];
-        const scalarField* unit =
-            pt.uniformF && direct ? &shapes_[pt.shape]->unitPotential : nullptr;
+        const bool ownUnit = pt.uniformF && !pointKernelOnly;
         for (label i = offset_[p]; i < offset_[p + 1]; ++i)
         {
             scalar pot = 0;
-            for (label s = 0; s < np && direct; ++s)
+            if (ownUnit)
+            {
+                pot += sigmaF[i]
+                   *shapes_[pt.shape]->unitPotential[i - offset_[p]];
+            }
+            else
+            {
+                pot += selfP_[i]*sigmaF[i];
+            }
+            for (label s = 0; s < np && !pointKernelOnly; ++s)
             {
                 const particle& ps = particles_[s];
-                if (s == p)
-                {
-                    if (unit)
-                    {
-                        pot += sigmaF[i]*(*unit)[i - offset_[p]];
-                        continue;
-                    }
-                }
-                else if (Qf[s] == 0 && ps.uniformF)
+                if (s == p || !ps.uniformF || Qf[s] == 0)
                 {
                     continue;
                 }
-                else if (ps.uniformF && quadWorld[s].empty())
+                if (isSphere(s))
                 {
-                    // A uniformly charged sphere: exact (Q/r outside,
-                    // Q/R inside an overlap)
+                    // Exact: Q/r outside, Q/R inside an overlap
                     pot += c4pi*Qf[s]/max
                     (
                         mag(x_[i] - ps.centre),
@@ -654,55 +689,43 @@ Foam::scalarField Foam::bemSolver::freePotential
                     );
                     continue;
                 }
-                else if (ps.uniformF)
+                if (distanceBelow(s, x_[i]) >= reach[s])
                 {
-                    // A uniformly charged ellipsoid: its patches' charges at
-                    // their centres of charge, by their quadrature points
-                    // within 4 patch sizes (the potential of a neighbour at
-                    // gaps 0.02-0.5 of its semi-axis within 1.2e-3 of a
-                    // 16x finer mesh, as close as all quadrature points)
-                    const label nQ = ellipsoidSurfaceMesh::nQuad;
-                    const scalar sf = sigmaF[offset_[s]];
-                    const scalarField& w = mesh(ps.shape).quadWeights();
-                    const pointField& y = quadWorld[s];
-                    const pointField& c = chargeCentre[s];
-                    scalar sum = 0;
-                    forAll(c, k)
-                    {
-                        const scalar aj = a_[offset_[s] + k];
-                        const scalar r2 = magSqr(x_[i] - c[k]);
-                        if (r2 > 16*aj)
-                        {
-                            sum += aj/Foam::sqrt(r2);
-                            continue;
-                        }
-                        for (label l = nQ*k; l < nQ*(k + 1); ++l)
-                        {
-                            sum += w[l]/mag(x_[i] - y[l]);
-                        }
-                    }
-                    pot += c4pi*sf*sum;
                     continue;
                 }
-                // Point kernel (near corrections below)
-                for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+                // Patches within 4 sizes: their quadrature points in place
+                // of the centre-of-charge kernel of the direct sum
+                const scalarField& w = mesh(ps.shape).quadWeights();
+                const pointField& y = quadWorld[s];
+                const scalar sf = sigmaF[offset_[s]];
+                for (label k = 0; k < offset_[s + 1] - offset_[s]; ++k)
                 {
-                    if (j != i)
+                    const label j = offset_[s] + k;
+                    const vector d = x_[i] - x_[j];
+                    const scalar r2 = magSqr(d);
+                    if (r2 > 16*a_[j])
                     {
-                        pot += c4pi*a_[j]*sigmaF[j]/mag(x_[i] - x_[j]);
+                        continue;
                     }
+                    const vector& e = (*shift)[j];
+                    const scalar rInv = 1/Foam::sqrt(r2);
+                    scalar quad = 0;
+                    for (label l = nQ*k; l < nQ*(k + 1); ++l)
+                    {
+                        quad += w[l]/mag(x_[i] - y[l]);
+                    }
+                    pot += c4pi*sf*
+                    (
+                        quad - a_[j]*(rInv + (e & d)*rInv*rInv*rInv)
+                    );
                 }
-            }
-            if (!unit)
-            {
-                pot += selfP_[i]*sigmaF[i];
             }
             for (const nearEntry& e : near_[i])
             {
                 const label s = owner_[e.j];
                 const bool pointKernel =
-                    !direct
-                 || (s == p ? !unit : !particles_[s].uniformF);
+                    pointKernelOnly
+                 || (s == p ? !ownUnit : !particles_[s].uniformF);
                 if (pointKernel)
                 {
                     pot += sigmaF[e.j]*e.P;
@@ -715,7 +738,6 @@ Foam::scalarField Foam::bemSolver::freePotential
             phi[i] += pot;
         }
     }
-    return phi;
 }
 
 
@@ -738,47 +760,90 @@ void Foam::bemSolver::computeOutputs()
     const scalarField q(a_*sigmaT);
     const scalarField qF(a_*sigmaFall);
 
-    // eps0 E of all other particles' surface charges at each patch
+    // eps0 E of all other particles' surface charges at each patch, and
+    // eps0 psi_f of the free charges by the point kernel: at the patches'
+    // centres of charge (to first order in their shift from the patch
+    // centres) for uniformly charged ellipsoids; spheres' exact monopoles,
+    // own uniform densities, quadrature near the target and the point
+    // charges are added by addFreePotential
     vectorField E(N, Zero);
-    if (fastSum_ && N > ctrl_.directOutputMax)
+    scalarField phi(N, Zero);
+    vectorField shift;
+    const bool direct = !(fastSum_ && N > ctrl_.directOutputMax);
+    if (!direct)
     {
+        // Field of the other particles (exact exclusion), potential of all
+        vectorField Eall;
+        fastSum_->evaluate(qF, x_, true, Eall, &phi);
         fastSum_->evaluateOthers(q, E, nullptr);
     }
     else
     {
         // Direct sums by blocks of (target, source) particles, branch-free
         // inner loops on separate coordinate arrays (vectorised)
-        scalarField X(N), Y(N), Z(N);
+        scalarField w;
+        freeSources(sigmaFall, w, shift);
+        scalarField X(N), Y(N), Z(N), SX(N), SY(N), SZ(N);
         for (label j = 0; j < N; ++j)
         {
             X[j] = x_[j].x();
             Y[j] = x_[j].y();
             Z[j] = x_[j].z();
+            SX[j] = w[j]*shift[j].x();
+            SY[j] = w[j]*shift[j].y();
+            SZ[j] = w[j]*shift[j].z();
         }
         for (label p = 0; p < np; ++p)
         {
+            // Own patches by the point kernel: a non-uniform free charge
+            bool ownPoint = false;
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                ownPoint = ownPoint || sigmaFall[i] != 0;
+            }
+            ownPoint = ownPoint && !particles_[p].uniformF;
             for (label i = offset_[p]; i < offset_[p + 1]; ++i)
             {
                 const scalar xi = X[i], yi = Y[i], zi = Z[i];
-                scalar ex = 0, ey = 0, ez = 0;
+                scalar ex = 0, ey = 0, ez = 0, pot = 0;
                 for (label s = 0; s < np; ++s)
                 {
-                    if (s == p) continue;
-                    #pragma omp simd reduction(+:ex, ey, ez)
-                    for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+                    const label j0 = offset_[s], j1 = offset_[s + 1];
+                    if (s != p)
                     {
-                        const scalar dx = xi - X[j];
-                        const scalar dy = yi - Y[j];
-                        const scalar dz = zi - Z[j];
-                        const scalar rInv =
-                            1/std::sqrt(dx*dx + dy*dy + dz*dz);
-                        const scalar qr3 = q[j]*rInv*rInv*rInv;
-                        ex += qr3*dx;
-                        ey += qr3*dy;
-                        ez += qr3*dz;
+                        #pragma omp simd reduction(+:ex, ey, ez, pot)
+                        for (label j = j0; j < j1; ++j)
+                        {
+                            const scalar dx = xi - X[j];
+                            const scalar dy = yi - Y[j];
+                            const scalar dz = zi - Z[j];
+                            const scalar rInv =
+                                1/std::sqrt(dx*dx + dy*dy + dz*dz);
+                            const scalar rInv3 = rInv*rInv*rInv;
+                            const scalar qr3 = q[j]*rInv3;
+                            pot += w[j]*rInv
+                              + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)*rInv3;
+                            ex += qr3*dx;
+                            ey += qr3*dy;
+                            ez += qr3*dz;
+                        }
+                    }
+                    else if (ownPoint)
+                    {
+                        // Own patches: potential only, without i itself
+                        #pragma omp simd reduction(+:pot)
+                        for (label j = j0; j < j1; ++j)
+                        {
+                            const scalar dx = xi - X[j];
+                            const scalar dy = yi - Y[j];
+                            const scalar dz = zi - Z[j];
+                            const scalar r2 = dx*dx + dy*dy + dz*dz;
+                            pot += (j == i ? 0 : qF[j]/std::sqrt(r2 + (j == i)));
+                        }
                     }
                 }
                 E[i] = c4pi*vector(ex, ey, ez);
+                phi[i] = c4pi*pot;
             }
         }
     }
@@ -798,16 +863,18 @@ void Foam::bemSolver::computeOutputs()
             E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
         }
     }
-
-    for (const particle& pt : particles_)
+    if (direct)
     {
-        shapeData& sd = *shapes_[pt.shape];
-        if (pt.uniformF && sd.unitPotential.empty())
+        for (const particle& pt : particles_)
         {
-            sd.unitPotential = sd.mesh->unitPotential();
+            shapeData& sd = *shapes_[pt.shape];
+            if (pt.uniformF && sd.unitPotential.empty())
+            {
+                sd.unitPotential = sd.mesh->unitPotential();
+            }
         }
     }
-    const scalarField phi(freePotential(sigmaFall));
+    addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
 
     force_.setSize(np);
     torque_.setSize(np);
