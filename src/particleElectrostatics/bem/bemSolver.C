@@ -819,10 +819,12 @@ void Foam::bemSolver::computeOutputs()
                             const scalar dz = zi - Z[j];
                             const scalar rInv =
                                 1/std::sqrt(dx*dx + dy*dy + dz*dz);
-                            const scalar rInv3 = rInv*rInv*rInv;
-                            const scalar qr3 = q[j]*rInv3;
+                            // (q rInv) rInv rInv: the forces' arithmetic
+                            // of the potential-free sum
+                            const scalar qr3 = q[j]*rInv*rInv*rInv;
                             pot += w[j]*rInv
-                              + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)*rInv3;
+                              + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)
+                               *rInv*rInv*rInv;
                             ex += qr3*dx;
                             ey += qr3*dy;
                             ez += qr3*dz;
