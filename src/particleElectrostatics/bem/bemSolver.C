@@ -579,8 +579,7 @@ void Foam::bemSolver::applyPrecond(const scalarField& x, scalarField& y) const
 
 bool Foam::bemSolver::isSphere(const label p) const
 {
-    const vector& S = mesh(particles_[p].shape).semiAxes();
-    return cmptMin(S) == cmptMax(S);
+    return mesh(particles_[p].shape).sphere();
 }
 
 
@@ -591,7 +590,6 @@ void Foam::bemSolver::freeSources
     vectorField& shift
 ) const
 {
-    const label nQ = ellipsoidSurfaceMesh::nQuad;
     w = a_*sigmaF;
     shift.setSize(x_.size());
     shift = Zero;
@@ -603,22 +601,14 @@ void Foam::bemSolver::freeSources
             continue;
         }
         const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
-        if (isSphere(s))
+        if (ms.sphere())
         {
             // A sphere: its exact monopole (addFreePotential)
             SubList<scalar>(w, ms.size(), offset_[s]) = 0;
             continue;
         }
-        forAll(ms.quadPoints(), l)
-        {
-            shift[offset_[s] + l/nQ] +=
-                ms.quadWeights()[l]*(ps.R & ms.quadPoints()[l]);
-        }
-        for (label k = 0; k < ms.size(); ++k)
-        {
-            const label j = offset_[s] + k;
-            shift[j] = ps.centre + shift[j]/a_[j] - x_[j];
-        }
+        SubList<vector>(shift, ms.size(), offset_[s]) =
+            ps.R & ms.chargeShifts();
     }
 }
 
@@ -634,26 +624,24 @@ void Foam::bemSolver::addFreePotential
     const label np = particles_.size();
     const scalar c4pi = 1/(4*pi);
     const label nQ = ellipsoidSurfaceMesh::nQuad;
+    // Quadrature within this many patch sizes of a uniformly charged
+    // ellipsoid's patch (the potential of a neighbour at gaps 0.02-0.5 of
+    // its semi-axis within 1.2e-3 of a 16x finer mesh, as close as all
+    // quadrature points)
+    const scalar quadReach = 4;
 
-    // Per source particle: its free charge; a uniformly charged
-    // ellipsoid's quadrature points and the reach of its quadrature (4
-    // patch sizes; 4.2: the centres of charge lie a little below the
+    // Per source particle: its free charge and the reach of its
+    // quadrature (5 % more: the centres of charge lie a little below the
     // surface)
     scalarField Qf(np, Zero), reach(np, Zero);
-    List<pointField> quadWorld(np);
     for (label s = 0; s < np; ++s)
     {
-        const particle& ps = particles_[s];
-        const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
         for (label j = offset_[s]; j < offset_[s + 1]; ++j)
         {
             Qf[s] += a_[j]*sigmaF[j];
         }
-        if (!pointKernelOnly && ps.uniformF && !isSphere(s) && Qf[s] != 0)
-        {
-            quadWorld[s] = ps.centre + (ps.R & ms.quadPoints());
-            reach[s] = 4.2*Foam::sqrt(max(ms.areas()));
-        }
+        reach[s] =
+            1.05*quadReach*Foam::sqrt(max(mesh(particles_[s].shape).areas()));
     }
 
     for (label p = 0; p < np; ++p)
@@ -693,17 +681,17 @@ void Foam::bemSolver::addFreePotential
                 {
                     continue;
                 }
-                // Patches within 4 sizes: their quadrature points in place
-                // of the centre-of-charge kernel of the direct sum
-                const scalarField& w = mesh(ps.shape).quadWeights();
-                const pointField& y = quadWorld[s];
+                // Patches within quadReach sizes: their quadrature points
+                // in place of the centre-of-charge kernel of the direct sum
+                const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
+                const vector xb = ps.R.T() & (x_[i] - ps.centre);
                 const scalar sf = sigmaF[offset_[s]];
-                for (label k = 0; k < offset_[s + 1] - offset_[s]; ++k)
+                for (label k = 0; k < ms.size(); ++k)
                 {
                     const label j = offset_[s] + k;
                     const vector d = x_[i] - x_[j];
                     const scalar r2 = magSqr(d);
-                    if (r2 > 16*a_[j])
+                    if (r2 > sqr(quadReach)*a_[j])
                     {
                         continue;
                     }
@@ -712,7 +700,8 @@ void Foam::bemSolver::addFreePotential
                     scalar quad = 0;
                     for (label l = nQ*k; l < nQ*(k + 1); ++l)
                     {
-                        quad += w[l]/mag(x_[i] - y[l]);
+                        quad +=
+                            ms.quadWeights()[l]/mag(xb - ms.quadPoints()[l]);
                     }
                     pot += c4pi*sf*
                     (
@@ -1511,9 +1500,9 @@ Foam::scalar Foam::bemSolver::shapeBytes(const label shapeI) const
     }
     const label n = sd->mesh->size();
     // Mesh: centres, normals, areas, curvatures, 16 quadrature points and
-    // weights per patch, vertices and faces (about 600 bytes per patch)
+    // weights per patch, vertices and faces (about 620 bytes per patch)
     scalar bytes =
-        600.0*n + 8.0*sd->selfGauss.size() + 8.0*sd->unitPotential.size();
+        620.0*n + 8.0*sd->selfGauss.size() + 8.0*sd->unitPotential.size();
     for (const auto& near : sd->nearBody)
     {
         bytes += sizeof(nearEntry)*near.capacity() + sizeof(near);

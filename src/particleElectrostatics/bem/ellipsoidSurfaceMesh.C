@@ -221,7 +221,7 @@ Foam::scalar curvedInverseDistance
 Foam::scalarField Foam::ellipsoidSurfaceMesh::unitPotential() const
 {
     const label nF = faces_.size();
-    if (cmptMin(semiAxes_) == cmptMax(semiAxes_))
+    if (sphere())
     {
         return scalarField(nF, semiAxes_.x());
     }
@@ -733,6 +733,7 @@ void Foam::ellipsoidSurfaceMesh::computePatchData()
 {
     const label nF = faces_.size();
     centres_.setSize(nF);
+    chargeShifts_.setSize(nF);
     normals_.setSize(nF);
     areas_.setSize(nF);
     meanCurvature_.setSize(nF);
@@ -786,6 +787,12 @@ void Foam::ellipsoidSurfaceMesh::computePatchData()
             }
         }
         areas_[fi] = area;
+        point c = Zero;
+        for (label l = nQuad*fi; l < nQuad*(fi + 1); ++l)
+        {
+            c += quadWeights_[l]*quadPoints_[l];
+        }
+        chargeShifts_[fi] = c/area - centres_[fi];
     }
 }
 

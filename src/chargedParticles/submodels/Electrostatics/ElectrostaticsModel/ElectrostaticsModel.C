@@ -165,11 +165,9 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
         ++i;
     }
 
-    // The range is the same on every processor (no boxes without a halo)
-    const List<boundBox> none;
     const processorHalo halo
     (
-        range > 0 ? processorHalo::processorBoxes(this->owner().mesh()) : none,
+        processorHalo::processorBoxes(this->owner().mesh()),
         xLocal,
         range
     );

@@ -162,14 +162,11 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
         ++i;
     }
 
-    // Every processor's box (the halo's); none in serial
-    const List<boundBox> serial;
-    const List<boundBox>& boxes =
-        Pstream::parRun()
-      ? processorHalo::processorBoxes(this->owner().mesh())
-      : serial;
     List<vector> f;
-    kernel_->computeDistributed(x, q, boxes, f);
+    kernel_->computeDistributed
+    (
+        x, q, processorHalo::processorBoxes(this->owner().mesh()), f
+    );
     if (!infoWritten_)
     {
         infoWritten_ = true;

@@ -701,12 +701,9 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
     const scalar rNear = multipoleNeighbours_ ? this->rNearFor(dMax) : 0;
 
     // This processor's parcels and the others' within reach of its box
-    const List<boundBox> serial;
     const processorHalo halo
     (
-        Pstream::parRun()
-      ? processorHalo::processorBoxes(this->owner().mesh())
-      : serial,
+        processorHalo::processorBoxes(this->owner().mesh()),
         x,
         max(rCut, rNear)
     );
