@@ -516,6 +516,8 @@ void Foam::meshPoisson::collectWallFaces()
     DynamicList<vector> n;
     DynamicList<scalar> r, sign;
     DynamicList<label> nFacePts;
+    // Per patch fixing the potential: its first face's index here
+    labelList fixedWallStart(pbm.size(), -1);
     forAll(pbm, patchi)
     {
         const polyPatch& pp = pbm[patchi];
@@ -531,6 +533,10 @@ void Foam::meshPoisson::collectWallFaces()
         if (sgn == 0)
         {
             continue;
+        }
+        if (sgn < 0)
+        {
+            fixedWallStart[patchi] = c.size();
         }
         forAll(pp, i)
         {
@@ -593,6 +599,48 @@ void Foam::meshPoisson::collectWallFaces()
         ListListOps::combine<pointField>(allP, accessOp<pointField>()),
         pointStart
     );
+
+    // Fixed potentials on the wall's surface: the scale of each face's
+    // coefficients from its surface height (its index among all
+    // processors' wall faces: this processor's follow the lower ones')
+    label offset = 0;
+    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    {
+        offset += allC[proci].size();
+    }
+    wallCoeffScale_.setSize(pbm.size());
+    forAll(fixedWallStart, patchi)
+    {
+        if (fixedWallStart[patchi] < 0)
+        {
+            continue;
+        }
+        const scalarField& deltaCoeffs = mesh_.boundary()[patchi].deltaCoeffs();
+        scalarField& scale = wallCoeffScale_[patchi];
+        scale.setSize(deltaCoeffs.size());
+        forAll(scale, i)
+        {
+            // Planar walls (a fit's round-off) keep their coefficients; a
+            // convex wall's surface lies inside the faces (s < 0)
+            const scalar d = 1/deltaCoeffs[i];
+            const scalar s = wallSurface_[offset + fixedWallStart[patchi] + i][0];
+            scale[i] = mag(s) < 1e-8*d ? 1 : d/(d + max(s, -0.5*d));
+        }
+    }
+}
+
+
+void Foam::meshPoisson::placeOnWallSurface(fvScalarMatrix& M) const
+{
+    forAll(wallCoeffScale_, patchi)
+    {
+        const scalarField& scale = wallCoeffScale_[patchi];
+        if (scale.size())
+        {
+            M.internalCoeffs()[patchi] *= scale;
+            M.boundaryCoeffs()[patchi] *= scale;
+        }
+    }
 }
 
 
@@ -1452,7 +1500,8 @@ void Foam::meshPoisson::solve()
      && !selfField_.valid()
     )
     {
-        const fvScalarMatrix L(fvm::laplacian(eps, Phi_));
+        fvScalarMatrix L(fvm::laplacian(eps, Phi_));
+        placeOnWallSurface(L);
         selfField_.reset
         (
             new shapeSelfField
@@ -1464,7 +1513,8 @@ void Foam::meshPoisson::solve()
                 radius_,
                 selfFieldRadius_*radius_,
                 nNonOrthCorr_,
-                nonOrthTolerance_
+                nonOrthTolerance_,
+                wallCoeffScale_
             )
         );
     }
@@ -1477,6 +1527,7 @@ void Foam::meshPoisson::solve()
         (
             fvm::laplacian(eps, Phi_) + rho
         );
+        placeOnWallSurface(PhiEqn);
         // Only used when no patch fixes the potential
         PhiEqn.setReference(Pstream::master() ? 0 : -1, 0);
         const scalar residual = PhiEqn.solve().initialResidual();

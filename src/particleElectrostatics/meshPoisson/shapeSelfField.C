@@ -24,7 +24,8 @@ Foam::shapeSelfField::shapeSelfField
     const scalar shapeRadius,
     const scalar patchRadius,
     const label nNonOrthCorr,
-    const scalar tolerance
+    const scalar tolerance,
+    const UList<scalarField>& wallCoeffScale
 )
 :
     mesh_(mesh),
@@ -60,6 +61,14 @@ Foam::shapeSelfField::shapeSelfField
         if (p.coupled())
         {
             boundaryPoint_[patchi] = p.Cn() + p.delta();
+        }
+        if (wallCoeffScale.size() && wallCoeffScale[patchi].size())
+        {
+            // A fixed potential on the wall's surface beyond the face
+            // (meshPoisson::placeOnWallSurface): there its coefficient
+            // d/(d + s) eps |Sf|/d puts it
+            boundaryPoint_[patchi] +=
+                p.nf()*(1/wallCoeffScale[patchi] - 1)/p.deltaCoeffs();
         }
         b = -internalCoeffs[patchi];
         const scalarField& magSf = p.magSf();
