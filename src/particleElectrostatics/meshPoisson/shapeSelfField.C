@@ -269,19 +269,192 @@ Foam::label Foam::shapeSelfField::holdingCell
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::List<Foam::vector> Foam::shapeSelfField::solve
+// * * * * * * * * * * * * * * * The patch system  * * * * * * * * * * * * * //
+
+//- A patch's equations, in patch-local rows: each face once with the row of
+//  each side (-1: a cell around the patch, holding the exact value at
+//  outAt, in the patch's unfolded frame) and its coefficient, interpolation
+//  weight, area vector and non-orthogonal correction vector; each boundary
+//  face with a fixed value (at bAt); each row's cell volume. Nothing in it
+//  refers to the mesh it came from
+struct Foam::shapeSelfField::patchSystem
+{
+    scalarField V;
+    DynamicList<label> own, nei;
+    DynamicList<scalar> coeff, weight, magSf;
+    DynamicList<vector> Sf, corr;
+    DynamicList<point> outAt;
+    DynamicList<label> bRow;
+    DynamicList<point> bAt;
+    DynamicList<vector> bSf;
+    DynamicList<scalar> bCoeff;
+};
+
+
+namespace
+{
+
+using namespace Foam;
+
+typedef Eigen::SimplicialLDLT
+<
+    Eigen::SparseMatrix<double>,
+    Eigen::Lower,
+    Eigen::MetisOrdering<int>
+> patchFactorisation;
+
+
+//- The fixed values around a patch for one charge: the exact potential
+//  per unit charge at the cells around it (and its gradient) and at the
+//  boundary points
+struct patchValues
+{
+    scalarField phiOut, phiB;
+    vectorField gradOut;
+};
+
+
+//- Gauss linear gradient g of a potential p at the patch's rows, with the
+//  fixed values around (fixed) or zero there (the part linear in p alone)
+template<class System>
+void gaussGrad
+(
+    const System& sys,
+    const patchValues& out,
+    const Eigen::VectorXd& p,
+    const bool fixed,
+    vectorField& g
+)
+{
+    g = Zero;
+    forAll(sys.own, j)
+    {
+        const label lo = sys.own[j], ln = sys.nei[j];
+        const scalar o = fixed ? out.phiOut[j] : 0;
+        const scalar phiF =
+            sys.weight[j]*(lo >= 0 ? p[lo] : o)
+          + (1 - sys.weight[j])*(ln >= 0 ? p[ln] : o);
+        if (lo >= 0)
+        {
+            g[lo] += phiF*sys.Sf[j];
+        }
+        if (ln >= 0)
+        {
+            g[ln] -= phiF*sys.Sf[j];
+        }
+    }
+    if (fixed)
+    {
+        forAll(sys.bRow, j)
+        {
+            g[sys.bRow[j]] += out.phiB[j]*sys.bSf[j];
+        }
+    }
+    forAll(g, i)
+    {
+        g[i] /= sys.V[i];
+    }
+}
+
+
+//- The explicit non-orthogonal correction's flux (added to the owner's
+//  Laplacian, taken from the neighbour's; the system is negated) from the
+//  gradient g, with the exact gradients around (fixed) or zero there
+template<class System>
+Eigen::VectorXd nonOrthCorrection
+(
+    const System& sys,
+    const patchValues& out,
+    const vectorField& g,
+    const scalar eps,
+    const bool fixed
+)
+{
+    Eigen::VectorXd c(Eigen::VectorXd::Zero(g.size()));
+    forAll(sys.own, j)
+    {
+        const label lo = sys.own[j], ln = sys.nei[j];
+        const vector o = fixed ? out.gradOut[j] : Zero;
+        const vector gf =
+            sys.weight[j]*(lo >= 0 ? g[lo] : o)
+          + (1 - sys.weight[j])*(ln >= 0 ? g[ln] : o);
+        const scalar flux = eps*sys.magSf[j]*(sys.corr[j] & gf);
+        if (lo >= 0)
+        {
+            c[lo] += flux;
+        }
+        if (ln >= 0)
+        {
+            c[ln] -= flux;
+        }
+    }
+    return c;
+}
+
+
+//- GMRES (Saad & Schultz 1986) for applyA(phi) = phi0, phi0 the start
+//  (phi in; the solution out), at most kMax iterations, to a residual of
+//  tolerance |phi0|. Hand-written: Eigen's GMRES (unsupported) takes an
+//  assembled matrix, the operator here is matrix-free
+template<class Operator>
+void gmres
+(
+    const Operator& applyA,
+    Eigen::VectorXd& phi,
+    const label kMax,
+    const scalar tolerance
+)
+{
+    const Eigen::VectorXd Aphi(applyA(phi));
+    // Residual of the start phi: M^-1 C phi
+    Eigen::VectorXd r(phi - Aphi);
+    const scalar beta = r.norm();
+    const scalar target = tolerance*phi.norm();
+    if (!(beta > target))
+    {
+        return;
+    }
+    const label n = phi.size();
+    Eigen::MatrixXd Q(n, kMax + 1);
+    Eigen::MatrixXd H(Eigen::MatrixXd::Zero(kMax + 1, kMax));
+    Q.col(0) = r/beta;
+    Eigen::VectorXd y;
+    for (label k = 0; k < kMax; ++k)
+    {
+        Eigen::VectorXd w(applyA(Q.col(k)));
+        for (label i = 0; i <= k; ++i)
+        {
+            H(i, k) = Q.col(i).dot(w);
+            w -= H(i, k)*Q.col(i);
+        }
+        H(k + 1, k) = w.norm();
+        Eigen::VectorXd e(Eigen::VectorXd::Zero(k + 2));
+        e[0] = beta;
+        const Eigen::MatrixXd Hk(H.topLeftCorner(k + 2, k + 1));
+        y = Hk.householderQr().solve(e);
+        if
+        (
+            (e - Hk*y).norm() < target
+         || H(k + 1, k) < 1e-14*beta
+         || k == kMax - 1
+        )
+        {
+            break;
+        }
+        Q.col(k + 1) = w/H(k + 1, k);
+    }
+    phi += Q.leftCols(y.size())*y;
+}
+
+} // End anonymous namespace
+
+
+Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
 (
     const UList<label>& patchCells,
-    const UList<vector>& patchShifts,
-    const UList<point>& xs,
-    const UList<DynamicList<label>>& shapeCells,
-    const UList<DynamicList<scalar>>& shapeWeights,
-    const point& wallPoint,
-    const vector& wallNormal,
-    const scalar imageSign
+    const UList<vector>& patchShifts
 ) const
 {
-    const label n = patchCells.size();
     const scalarField& V = mesh_.V().field();
     const vectorField& C = mesh_.C().primitiveField();
     const labelUList& own = mesh_.owner();
@@ -292,26 +465,13 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     const surfaceScalarField& magSf = mesh_.magSf();
     const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    const scalar k = k_;
 
+    patchSystem sys;
+    sys.V.setSize(patchCells.size());
     forAll(patchCells, i)
     {
-        local_[patchCells[i]] = i;
+        sys.V[i] = V[patchCells[i]];
     }
-
-    // The patch's faces, each once, with the patch-local index of each
-    // side (-1: a cell around the patch, holding the exact value at its
-    // centre, outAt in the patch's unfolded frame): internal faces and
-    // cyclic faces between two patch cells (from the owner patch's side),
-    // and boundary faces with a fixed value (at bFaceAt)
-    DynamicList<label> faceOwn, faceNei;
-    DynamicList<scalar> faceCoeff, faceWeight, faceMagSf;
-    DynamicList<vector> faceSf, faceCorr;
-    DynamicList<point> faceOutAt;
-    DynamicList<label> bFaceRow;
-    DynamicList<point> bFaceAt;
-    DynamicList<vector> bFaceSf;
-    DynamicList<scalar> bFaceCoeff;
     const auto addFace =
         [&]
         (
@@ -320,15 +480,17 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             const point& outAt
         )
     {
-        faceOwn.append(lo);
-        faceNei.append(ln);
-        faceCoeff.append(a);
-        faceWeight.append(w);
-        faceSf.append(sf);
-        faceMagSf.append(msf);
-        faceCorr.append(corr);
-        faceOutAt.append(outAt);
+        sys.own.append(lo);
+        sys.nei.append(ln);
+        sys.coeff.append(a);
+        sys.weight.append(w);
+        sys.Sf.append(sf);
+        sys.magSf.append(msf);
+        sys.corr.append(corr);
+        sys.outAt.append(outAt);
     };
+    // Internal faces and cyclic faces between two patch cells (from the
+    // owner patch's side), and boundary faces with a fixed value
     forAll(patchCells, i)
     {
         const label c = patchCells[i];
@@ -392,22 +554,76 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
                     continue;
                 }
             }
-            bFaceRow.append(i);
-            bFaceAt.append(at);
-            bFaceSf.append(Sf.boundaryField()[patchi][facei]);
-            bFaceCoeff.append(b);
+            sys.bRow.append(i);
+            sys.bAt.append(at);
+            sys.bSf.append(Sf.boundaryField()[patchi][facei]);
+            sys.bCoeff.append(b);
         }
     }
+    return sys;
+}
+
+
+Foam::List<Foam::vector> Foam::shapeSelfField::solve
+(
+    const UList<label>& patchCells,
+    const UList<vector>& patchShifts,
+    const UList<point>& xs,
+    const UList<DynamicList<label>>& shapeCells,
+    const UList<DynamicList<scalar>>& shapeWeights,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = i;
+    }
+    const patchSystem sys(assemblePatch(patchCells, patchShifts));
+    List<labelList> shapeRows(xs.size());
+    forAll(xs, s)
+    {
+        shapeRows[s].setSize(shapeCells[s].size());
+        forAll(shapeCells[s], j)
+        {
+            shapeRows[s][j] = local_[shapeCells[s][j]];
+        }
+    }
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = -1;
+    }
+    return solvePatch
+    (
+        sys, xs, shapeRows, shapeWeights, wallPoint, wallNormal, imageSign
+    );
+}
+
+
+Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
+(
+    const patchSystem& sys,
+    const UList<point>& xs,
+    const UList<labelList>& shapeRows,
+    const UList<DynamicList<scalar>>& shapeWeights,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    const label n = sys.V.size();
+    const scalar k = k_;
 
     // The matrix (negated: symmetric positive definite), factorised once
     // for every shape
     std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(2*faceOwn.size() + n);
+    triplets.reserve(2*sys.own.size() + n);
     scalarField diag(n, 0);
-    forAll(faceOwn, j)
+    forAll(sys.own, j)
     {
-        const scalar a = faceCoeff[j];
-        const label lo = faceOwn[j], ln = faceNei[j];
+        const scalar a = sys.coeff[j];
+        const label lo = sys.own[j], ln = sys.nei[j];
         if (lo >= 0)
         {
             diag[lo] += a;
@@ -422,9 +638,9 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             triplets.emplace_back(ln, lo, -a);
         }
     }
-    forAll(bFaceRow, j)
+    forAll(sys.bRow, j)
     {
-        diag[bFaceRow[j]] += bFaceCoeff[j];
+        diag[sys.bRow[j]] += sys.bCoeff[j];
     }
     forAll(diag, i)
     {
@@ -435,21 +651,18 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     // METIS nested dissection instead of Eigen's default AMD ordering: less
     // fill on these 3-D patches, so the factorisation (most of the self
     // field's cost) runs about 1.5x faster with the same result
-    const Eigen::SimplicialLDLT
-    <
-        Eigen::SparseMatrix<double>,
-        Eigen::Lower,
-        Eigen::MetisOrdering<int>
-    > ldlt(M);
+    const patchFactorisation ldlt(M);
 
     List<vector> result(xs.size(), Zero);
-    scalarField phiOut(faceOwn.size()), phiB(bFaceRow.size());
-    vectorField gradOut(faceOwn.size());
+    patchValues out;
+    out.phiOut.setSize(sys.own.size());
+    out.gradOut.setSize(sys.own.size());
+    out.phiB.setSize(sys.bRow.size());
     vectorField g(n);
     forAll(xs, s)
     {
         const point& x = xs[s];
-        const UList<label>& cells = shapeCells[s];
+        const labelUList& rows = shapeRows[s];
         const UList<scalar>& w = shapeWeights[s];
 
         // The exact potential per unit charge (and its gradient) at the
@@ -474,16 +687,16 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             }
         };
         vector unused;
-        forAll(faceOwn, j)
+        forAll(sys.own, j)
         {
-            if (faceOwn[j] < 0 || faceNei[j] < 0)
+            if (sys.own[j] < 0 || sys.nei[j] < 0)
             {
-                exact(faceOutAt[j], phiOut[j], gradOut[j]);
+                exact(sys.outAt[j], out.phiOut[j], out.gradOut[j]);
             }
         }
-        forAll(bFaceRow, j)
+        forAll(sys.bRow, j)
         {
-            exact(bFaceAt[j], phiB[j], unused);
+            exact(sys.bAt[j], out.phiB[j], unused);
         }
 
         // The shape's charge and the fixed values
@@ -493,91 +706,28 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         {
             wSum += w[j];
         }
-        forAll(cells, j)
+        forAll(rows, j)
         {
-            rhs0[local_[cells[j]]] += w[j]/wSum;
+            rhs0[rows[j]] += w[j]/wSum;
         }
-        forAll(faceOwn, j)
+        forAll(sys.own, j)
         {
-            const label l = faceOwn[j] < 0 ? faceNei[j] : faceOwn[j];
-            if (faceOwn[j] < 0 || faceNei[j] < 0)
+            const label l = sys.own[j] < 0 ? sys.nei[j] : sys.own[j];
+            if (sys.own[j] < 0 || sys.nei[j] < 0)
             {
-                rhs0[l] += faceCoeff[j]*phiOut[j];
+                rhs0[l] += sys.coeff[j]*out.phiOut[j];
             }
         }
-        forAll(bFaceRow, j)
+        forAll(sys.bRow, j)
         {
-            rhs0[bFaceRow[j]] += bFaceCoeff[j]*phiB[j];
+            rhs0[sys.bRow[j]] += sys.bCoeff[j]*out.phiB[j];
         }
-        // Gauss linear gradient g of a potential p at the patch cells, with
-        // the fixed values around (fixed) or zero there (the part linear
-        // in p alone)
-        const auto gaussGrad = [&](const Eigen::VectorXd& p, const bool fixed)
-        {
-            g = Zero;
-            forAll(faceOwn, j)
-            {
-                const label lo = faceOwn[j], ln = faceNei[j];
-                const scalar out = fixed ? phiOut[j] : 0;
-                const scalar phiF =
-                    faceWeight[j]*(lo >= 0 ? p[lo] : out)
-                  + (1 - faceWeight[j])*(ln >= 0 ? p[ln] : out);
-                if (lo >= 0)
-                {
-                    g[lo] += phiF*faceSf[j];
-                }
-                if (ln >= 0)
-                {
-                    g[ln] -= phiF*faceSf[j];
-                }
-            }
-            if (fixed)
-            {
-                forAll(bFaceRow, j)
-                {
-                    g[bFaceRow[j]] += phiB[j]*bFaceSf[j];
-                }
-            }
-            forAll(patchCells, i)
-            {
-                g[i] /= V[patchCells[i]];
-            }
-        };
-
-        // The explicit non-orthogonal correction's flux (added to the
-        // owner's Laplacian, taken from the neighbour's; the system is
-        // negated) from the gradient g
-        const auto correction = [&](const bool fixed)
-        {
-            Eigen::VectorXd c(Eigen::VectorXd::Zero(n));
-            forAll(faceOwn, j)
-            {
-                const label lo = faceOwn[j], ln = faceNei[j];
-                const vector out = fixed ? gradOut[j] : Zero;
-                const vector gf =
-                    faceWeight[j]*(lo >= 0 ? g[lo] : out)
-                  + (1 - faceWeight[j])*(ln >= 0 ? g[ln] : out);
-                const scalar flux =
-                    eps_*faceMagSf[j]*(faceCorr[j] & gf);
-                if (lo >= 0)
-                {
-                    c[lo] += flux;
-                }
-                if (ln >= 0)
-                {
-                    c[ln] -= flux;
-                }
-            }
-            return c;
-        };
 
         // With the correction, the potential solves M phi = rhs0 + C phi
         // + c0 (C linear in phi, c0 from the fixed values): meshPoisson's
         // correctors are the fixed-point iteration of
-        // (I - M^-1 C) phi = M^-1 (rhs0 + c0), solved here by GMRES
-        // (Saad & Schultz 1986) preconditioned by the factorisation, in
-        // fewer solves. Hand-written: Eigen's GMRES (unsupported) takes an
-        // assembled matrix, C is a matrix-free two-ring stencil
+        // (I - M^-1 C) phi = M^-1 (rhs0 + c0), solved by GMRES
+        // preconditioned by the factorisation, in fewer solves
         Eigen::VectorXd phi;
         if (nNonOrthCorr_ == 0)
         {
@@ -585,58 +735,24 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
         }
         else
         {
-            gaussGrad(Eigen::VectorXd::Zero(n), true);
-            phi = ldlt.solve(rhs0 + correction(true));
+            gaussGrad(sys, out, Eigen::VectorXd::Zero(n), true, g);
+            phi = ldlt.solve(rhs0 + nonOrthCorrection(sys, out, g, eps_, true));
             const auto A = [&](const Eigen::VectorXd& v)
             {
-                gaussGrad(v, false);
-                return Eigen::VectorXd(v - ldlt.solve(correction(false)));
+                gaussGrad(sys, out, v, false, g);
+                return Eigen::VectorXd
+                (
+                    v - ldlt.solve(nonOrthCorrection(sys, out, g, eps_, false))
+                );
             };
-            const Eigen::VectorXd Aphi(A(phi));
-            // Residual of the start phi: M^-1 C phi
-            Eigen::VectorXd r(phi - Aphi);
-            const scalar beta = r.norm();
-            const scalar target = tolerance_*phi.norm();
-            if (beta > target)
-            {
-                const label kMax = nNonOrthCorr_;
-                Eigen::MatrixXd Q(n, kMax + 1);
-                Eigen::MatrixXd H(Eigen::MatrixXd::Zero(kMax + 1, kMax));
-                Q.col(0) = r/beta;
-                Eigen::VectorXd y;
-                for (label k = 0; k < kMax; ++k)
-                {
-                    Eigen::VectorXd w(A(Q.col(k)));
-                    for (label i = 0; i <= k; ++i)
-                    {
-                        H(i, k) = Q.col(i).dot(w);
-                        w -= H(i, k)*Q.col(i);
-                    }
-                    H(k + 1, k) = w.norm();
-                    Eigen::VectorXd e(Eigen::VectorXd::Zero(k + 2));
-                    e[0] = beta;
-                    const Eigen::MatrixXd Hk(H.topLeftCorner(k + 2, k + 1));
-                    y = Hk.householderQr().solve(e);
-                    if
-                    (
-                        (e - Hk*y).norm() < target
-                     || H(k + 1, k) < 1e-14*beta
-                     || k == kMax - 1
-                    )
-                    {
-                        break;
-                    }
-                    Q.col(k + 1) = w/H(k + 1, k);
-                }
-                phi += Q.leftCols(y.size())*y;
-            }
+            gmres(A, phi, nNonOrthCorr_, tolerance_);
         }
 
         // The shape's average of -grad(Phi)
-        gaussGrad(phi, true);
-        forAll(cells, j)
+        gaussGrad(sys, out, phi, true, g);
+        forAll(rows, j)
         {
-            result[s] -= w[j]*g[local_[cells[j]]];
+            result[s] -= w[j]*g[rows[j]];
         }
         result[s] /= wSum;
         if (imageSign != 0)
@@ -646,11 +762,6 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
             const vector ri(x - xImage);
             result[s] -= (imageSign*k/pow3(mag(ri)))*ri;
         }
-    }
-
-    forAll(patchCells, i)
-    {
-        local_[patchCells[i]] = -1;
     }
     return result;
 }
