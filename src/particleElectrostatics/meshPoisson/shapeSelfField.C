@@ -314,6 +314,90 @@ struct patchValues
 };
 
 
+//- The negated Laplacian of a patch (symmetric positive definite)
+template<class System>
+Eigen::SparseMatrix<double> patchMatrix(const System& sys)
+{
+    const label n = sys.V.size();
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(2*sys.own.size() + n);
+    scalarField diag(n, 0);
+    forAll(sys.own, j)
+    {
+        const scalar a = sys.coeff[j];
+        const label lo = sys.own[j], ln = sys.nei[j];
+        if (lo >= 0)
+        {
+            diag[lo] += a;
+        }
+        if (ln >= 0)
+        {
+            diag[ln] += a;
+        }
+        if (lo >= 0 && ln >= 0)
+        {
+            triplets.emplace_back(lo, ln, -a);
+            triplets.emplace_back(ln, lo, -a);
+        }
+    }
+    forAll(sys.bRow, j)
+    {
+        diag[sys.bRow[j]] += sys.bCoeff[j];
+    }
+    forAll(diag, i)
+    {
+        triplets.emplace_back(i, i, diag[i]);
+    }
+    Eigen::SparseMatrix<double> M(n, n);
+    M.setFromTriplets(triplets.begin(), triplets.end());
+    return M;
+}
+
+
+//- The exact potential per unit charge (and its gradient) at the cells
+//  around the patch and at the boundary points: the charge at x in free
+//  space, or with its image (imageSign, at xImage) in the nearest wall's
+//  plane; k the Coulomb constant
+template<class System>
+void exactValues
+(
+    const System& sys,
+    const point& x,
+    const point& xImage,
+    const scalar imageSign,
+    const scalar k,
+    patchValues& out
+)
+{
+    const auto exact = [&](const point& y, scalar& phiY, vector& gradY)
+    {
+        const vector r(y - x);
+        const scalar mr = mag(r);
+        phiY = k/mr;
+        gradY = (-k/pow3(mr))*r;
+        if (imageSign != 0)
+        {
+            const vector ri(y - xImage);
+            const scalar mri = mag(ri);
+            phiY += imageSign*k/mri;
+            gradY -= (imageSign*k/pow3(mri))*ri;
+        }
+    };
+    vector unused;
+    forAll(sys.own, j)
+    {
+        if (sys.own[j] < 0 || sys.nei[j] < 0)
+        {
+            exact(sys.outAt[j], out.phiOut[j], out.gradOut[j]);
+        }
+    }
+    forAll(sys.bRow, j)
+    {
+        exact(sys.bAt[j], out.phiB[j], unused);
+    }
+}
+
+
 //- Gauss linear gradient g of a potential p at the patch's rows, with the
 //  fixed values around (fixed) or zero there (the part linear in p alone)
 template<class System>
@@ -617,37 +701,7 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
 
     // The matrix (negated: symmetric positive definite), factorised once
     // for every shape
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(2*sys.own.size() + n);
-    scalarField diag(n, 0);
-    forAll(sys.own, j)
-    {
-        const scalar a = sys.coeff[j];
-        const label lo = sys.own[j], ln = sys.nei[j];
-        if (lo >= 0)
-        {
-            diag[lo] += a;
-        }
-        if (ln >= 0)
-        {
-            diag[ln] += a;
-        }
-        if (lo >= 0 && ln >= 0)
-        {
-            triplets.emplace_back(lo, ln, -a);
-            triplets.emplace_back(ln, lo, -a);
-        }
-    }
-    forAll(sys.bRow, j)
-    {
-        diag[sys.bRow[j]] += sys.bCoeff[j];
-    }
-    forAll(diag, i)
-    {
-        triplets.emplace_back(i, i, diag[i]);
-    }
-    Eigen::SparseMatrix<double> M(n, n);
-    M.setFromTriplets(triplets.begin(), triplets.end());
+    const Eigen::SparseMatrix<double> M(patchMatrix(sys));
     // METIS nested dissection instead of Eigen's default AMD ordering: less
     // fill on these 3-D patches, so the factorisation (most of the self
     // field's cost) runs about 1.5x faster with the same result
@@ -665,39 +719,11 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
         const labelUList& rows = shapeRows[s];
         const UList<scalar>& w = shapeWeights[s];
 
-        // The exact potential per unit charge (and its gradient) at the
-        // cells around the patch and the boundary points: free space, or
-        // the charge and its image in the nearest wall's plane
         const point xImage
         (
             x - 2*((x - wallPoint) & wallNormal)*wallNormal
         );
-        const auto exact = [&](const point& y, scalar& phiY, vector& gradY)
-        {
-            const vector r(y - x);
-            const scalar mr = mag(r);
-            phiY = k/mr;
-            gradY = (-k/pow3(mr))*r;
-            if (imageSign != 0)
-            {
-                const vector ri(y - xImage);
-                const scalar mri = mag(ri);
-                phiY += imageSign*k/mri;
-                gradY -= (imageSign*k/pow3(mri))*ri;
-            }
-        };
-        vector unused;
-        forAll(sys.own, j)
-        {
-            if (sys.own[j] < 0 || sys.nei[j] < 0)
-            {
-                exact(sys.outAt[j], out.phiOut[j], out.gradOut[j]);
-            }
-        }
-        forAll(sys.bRow, j)
-        {
-            exact(sys.bAt[j], out.phiB[j], unused);
-        }
+        exactValues(sys, x, xImage, imageSign, k, out);
 
         // The shape's charge and the fixed values
         Eigen::VectorXd rhs0(Eigen::VectorXd::Zero(n));
