@@ -19,6 +19,8 @@
 #include "ListListOps.H"
 #include "unitConversion.H"
 #include "polyMeshTools.H"
+#include "syncTools.H"
+#include "PstreamBuffers.H"
 
 #include <Eigen/QR>
 
@@ -1253,14 +1255,36 @@ void Foam::meshPoisson::removeSelfFields
             wImaged[origin[i]] += w;
         }
     }
+    // In parallel a shape split between processors is solved by its owner
+    // on the patch gathered from every processor, unless imaged on any
+    DynamicList<label> split;
+    DynamicList<scalar> splitVref;
+    scalarField imaged(wImaged);
+    if (Pstream::parRun())
+    {
+        halo_->sumToOwners(imaged);
+    }
+    const scalarField& V = mesh_.V().field();
     for (label i = 0; i < nReal; ++i)
     {
         // The whole shape on this processor, no wall image deposited
-        // (else left as it is: a shape cut by a wall or a processor
-        // patch); its cell: the one of its own (not a copy's) with the
-        // largest weight
-        if (wImaged[i] > 0 || wLocal[i] < (1 - 1e-12)*shapeSum_[i])
+        // (else left as it is: a shape cut by a wall, or split between
+        // processors and owned elsewhere); its cell: the one of its own
+        // (not a copy's) with the largest weight
+        const bool splitHere =
+            wLocal[i] < (1 - 1e-12)*shapeSum_[i];
+        if (wImaged[i] > 0 || splitHere)
         {
+            if
+            (
+                splitHere && !meshUniform_ && Pstream::parRun()
+             && i < halo_->nLocal() && !(imaged[i] > 0)
+             && shapeStart_[i + 1] > shapeStart_[i]
+            )
+            {
+                split.append(i);
+                splitVref.append(V[shapeCells_[shapeStart_[i]]]);
+            }
             continue;
         }
         scalar wMax = 0;
@@ -1297,6 +1321,18 @@ void Foam::meshPoisson::removeSelfFields
              && mag(self)
               > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self);
         }
+        if
+        (
+            atCharge && Pstream::parRun() && !meshUniform_
+         && patchCrossesProcessors(xs_[i])
+        )
+        {
+            // Its patch reaches another processor's cells: solved on the
+            // patch gathered from them (at the points it is cut there)
+            split.append(i);
+            splitVref.append(V[celli]);
+            continue;
+        }
         if (atCharge)
         {
             s = selfField_->fieldAtCharge
@@ -1305,6 +1341,139 @@ void Foam::meshPoisson::removeSelfFields
             );
         }
         shapeField_[i] -= qw*s;
+    }
+    if (Pstream::parRun() && !meshUniform_)
+    {
+        removeSplitSelfFields(split, splitVref, neighbourhood, shape, wallPlane);
+    }
+}
+
+
+bool Foam::meshPoisson::patchCrossesProcessors(const point& x) const
+{
+    const scalar reach = selfField_->patchRadius();
+    const List<boundBox>& boxes = processorHalo::processorBoxes(mesh_);
+    forAll(boxes, proci)
+    {
+        if (proci != Pstream::myProcNo() && boxes[proci].overlaps(x, sqr(reach)))
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
+
+template<class Neighbourhood, class Shape, class WallPlane>
+void Foam::meshPoisson::removeSplitSelfFields
+(
+    const labelUList& split,
+    const UList<scalar>& Vref,
+    const Neighbourhood& neighbourhood,
+    const Shape& shape,
+    const WallPlane& wallPlane
+)
+{
+    // Requests to every processor whose mesh is within the patch radius
+    const scalar reach = selfField_->patchRadius();
+    const List<boundBox>& boxes = processorHalo::processorBoxes(mesh_);
+    const label nProcs = Pstream::nProcs();
+    List<DynamicList<label>> reqId(nProcs);
+    List<DynamicList<point>> reqX(nProcs);
+    List<DynamicList<scalar>> reqV(nProcs);
+    forAll(split, r)
+    {
+        const point& x = xs_[split[r]];
+        for (label proci = 0; proci < nProcs; ++proci)
+        {
+            if (boxes[proci].overlaps(x, sqr(reach)))
+            {
+                reqId[proci].append(r);
+                reqX[proci].append(x);
+                reqV[proci].append(Vref[r]);
+            }
+        }
+    }
+    PstreamBuffers requests(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (reqId[proci].size())
+        {
+            UOPstream os(proci, requests);
+            os << reqId[proci] << reqX[proci] << reqV[proci];
+        }
+    }
+    labelList requestSizes;
+    requests.finishedSends(requestSizes);
+
+    // Each processor's part of each patch asked for
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (!requestSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, requests);
+        const labelList ids(is);
+        const pointField xr(is);
+        const scalarField Vr(is);
+        List<shapeSelfField::patchPart> parts(ids.size());
+        forAll(ids, j)
+        {
+            DynamicList<label> cells, shapeCells;
+            DynamicList<vector> shifts;
+            DynamicList<scalar> w;
+            neighbourhood(xr[j], reach, cells, shifts);
+            shape(xr[j], shapeCells, w);
+            parts[j] = selfField_->part
+            (
+                cells, shifts, shapeCells, w, xr[j], reach, Vr[j],
+                cellGid_, neighbourGid_
+            );
+        }
+        UOPstream os(proci, answers);
+        os << ids;
+        for (const shapeSelfField::patchPart& p : parts)
+        {
+            os << p;
+        }
+    }
+    labelList answerSizes;
+    answers.finishedSends(answerSizes);
+
+    // The owners solve
+    List<DynamicList<shapeSelfField::patchPart>> partsOf(split.size());
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (!answerSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, answers);
+        const labelList ids(is);
+        for (const label r : ids)
+        {
+            shapeSelfField::patchPart p;
+            is >> p;
+            partsOf[r].append(p);
+        }
+    }
+    forAll(split, r)
+    {
+        const label i = split[r];
+        point wallPoint(Zero);
+        vector wallNormal(Zero);
+        scalar imageSign = 0;
+        wallPlane(xs_[i], reach, wallPoint, wallNormal, imageSign);
+        const vector s
+        (
+            selfField_->solveParts
+            (
+                partsOf[r], xs_[i], wallPoint, wallNormal, imageSign
+            )
+        );
+        shapeField_[i] -= qs_[i]*shapeSum_[i]*s;
     }
 }
 
@@ -1418,6 +1587,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             << "tolerance 1e-10; relTol 0; }" << exit(FatalIOError);
     }
 
+    meshUniform_ = true;
     findPeriodicShifts();
     binCells();
     localBb_ = boundBox(mesh.points(), false);
@@ -1517,6 +1687,17 @@ void Foam::meshPoisson::solve()
                 wallCoeffScale_
             )
         );
+        if (Pstream::parRun())
+        {
+            globalCells_.reset(new globalIndex(mesh_.nCells()));
+            cellGid_ = identity(mesh_.nCells(), globalCells_->localStart());
+            syncTools::swapBoundaryCellList(mesh_, cellGid_, neighbourGid_);
+            // Uniform on every processor, with one cell volume
+            const scalarField& V = mesh_.V().field();
+            meshUniform_ =
+                returnReduce(selfField_->uniform(), andOp<bool>())
+             && gMax(V) - gMin(V) <= 1e-6*gMin(V);
+        }
     }
 
     // The non-orthogonal correction is explicit (from the Phi of the last

@@ -7,6 +7,8 @@
 #include "emptyFvPatch.H"
 #include "cyclicFvPatch.H"
 #include "surfaceFields.H"
+#include "processorPolyPatch.H"
+#include "Map.H"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -103,6 +105,16 @@ bool Foam::shapeSelfField::uniformAround
     const UList<label>& cells
 ) const
 {
+    return uniformAmong(cells, mesh_.V()[c]);
+}
+
+
+bool Foam::shapeSelfField::uniformAmong
+(
+    const UList<label>& cells,
+    const scalar Vref
+) const
+{
     const scalarField& V = mesh_.V().field();
     const surfaceScalarField& w = mesh_.weights();
     const surfaceVectorField& corr = mesh_.nonOrthCorrectionVectors();
@@ -110,7 +122,7 @@ bool Foam::shapeSelfField::uniformAround
     const scalar tol = 1e-6;
     for (const label ci : cells)
     {
-        if (mag(V[ci] - V[c]) > tol*V[c])
+        if (mag(V[ci] - Vref) > tol*Vref)
         {
             return false;
         }
@@ -536,7 +548,8 @@ void gmres
 Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
 (
     const UList<label>& patchCells,
-    const UList<vector>& patchShifts
+    const UList<vector>& patchShifts,
+    DynamicList<label>* bFaceOf
 ) const
 {
     const scalarField& V = mesh_.V().field();
@@ -637,6 +650,10 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
                     }
                     continue;
                 }
+            }
+            if (bFaceOf)
+            {
+                bFaceOf->append(f);
             }
             sys.bRow.append(i);
             sys.bAt.append(at);
@@ -790,6 +807,239 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
         }
     }
     return result;
+}
+
+
+bool Foam::shapeSelfField::uniform() const
+{
+    return
+        mesh_.nCells() == 0
+     || uniformAmong(identity(mesh_.nCells()), mesh_.V()[0]);
+}
+
+
+Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
+(
+    const UList<label>& patchCells,
+    const UList<vector>& patchShifts,
+    const UList<label>& shapeCells,
+    const UList<scalar>& shapeWeights,
+    const point& x,
+    const scalar reach,
+    const scalar Vref,
+    const labelUList& cellGid,
+    const labelUList& neighbourGid
+) const
+{
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = i;
+    }
+    DynamicList<label> bFaceOf;
+    const patchSystem sys(assemblePatch(patchCells, patchShifts, &bFaceOf));
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = -1;
+    }
+
+    patchPart p;
+    p.uniform = uniformAmong(patchCells, Vref);
+    p.cells.setSize(patchCells.size());
+    forAll(patchCells, i)
+    {
+        p.cells[i] = cellGid[patchCells[i]];
+    }
+    p.V = sys.V;
+    const auto gid = [&](const label row) { return row < 0 ? -1 : p.cells[row]; };
+    DynamicList<label> own(sys.own.size()), nei(sys.own.size());
+    DynamicList<scalar> coeff(sys.own.size()), weight(sys.own.size());
+    DynamicList<scalar> magSf(sys.own.size());
+    DynamicList<vector> Sf(sys.own.size()), corr(sys.own.size());
+    DynamicList<point> outAt(sys.own.size());
+    const auto addFace = [&](const label j, const label o, const label n, const point& at)
+    {
+        own.append(o);
+        nei.append(n);
+        coeff.append(j < 0 ? 0 : sys.coeff[j]);
+        weight.append(j < 0 ? 0 : sys.weight[j]);
+        magSf.append(j < 0 ? 0 : sys.magSf[j]);
+        Sf.append(j < 0 ? Zero : sys.Sf[j]);
+        corr.append(j < 0 ? Zero : sys.corr[j]);
+        outAt.append(at);
+    };
+    forAll(sys.own, j)
+    {
+        addFace(j, gid(sys.own[j]), gid(sys.nei[j]), sys.outAt[j]);
+    }
+    // Faces on processor patches: to a cell of the patch on the other side
+    // (once, from the side of the smaller id) or to a cell around it,
+    // with the exact value at its centre, as an internal face of a serial
+    // mesh would be
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const label nInternal = mesh_.nInternalFaces();
+    DynamicList<label> bRow;
+    DynamicList<point> bAt;
+    DynamicList<vector> bSf;
+    DynamicList<scalar> bCoeff;
+    forAll(sys.bRow, j)
+    {
+        const label f = bFaceOf[j];
+        const label patchi = pbm.whichPatch(f);
+        const label me = p.cells[sys.bRow[j]];
+        if (!isA<processorPolyPatch>(pbm[patchi]))
+        {
+            bRow.append(me);
+            bAt.append(sys.bAt[j]);
+            bSf.append(sys.bSf[j]);
+            bCoeff.append(sys.bCoeff[j]);
+            continue;
+        }
+        const label facei = f - pbm[patchi].start();
+        const label other = neighbourGid[f - nInternal];
+        const bool inPatch = magSqr(sys.bAt[j] - x) < reach*reach;
+        if (inPatch && me > other)
+        {
+            continue;
+        }
+        own.append(me);
+        nei.append(inPatch ? other : -1);
+        coeff.append(sys.bCoeff[j]);
+        weight.append(mesh_.weights().boundaryField()[patchi][facei]);
+        magSf.append(mesh_.magSf().boundaryField()[patchi][facei]);
+        Sf.append(sys.bSf[j]);
+        corr.append(mesh_.nonOrthCorrectionVectors().boundaryField()[patchi][facei]);
+        outAt.append(sys.bAt[j]);
+    }
+    p.own.transfer(own);
+    p.nei.transfer(nei);
+    p.coeff.transfer(coeff);
+    p.weight.transfer(weight);
+    p.magSf.transfer(magSf);
+    p.Sf.transfer(Sf);
+    p.corr.transfer(corr);
+    p.outAt.transfer(outAt);
+    p.bRow.transfer(bRow);
+    p.bAt.transfer(bAt);
+    p.bSf.transfer(bSf);
+    p.bCoeff.transfer(bCoeff);
+    p.shapeCells.setSize(shapeCells.size());
+    forAll(shapeCells, j)
+    {
+        p.shapeCells[j] = cellGid[shapeCells[j]];
+    }
+    p.shapeWeights = shapeWeights;
+    return p;
+}
+
+
+Foam::vector Foam::shapeSelfField::solveParts
+(
+    const UList<patchPart>& parts,
+    const point& x,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    bool uniform = true;
+    label n = 0;
+    for (const patchPart& p : parts)
+    {
+        uniform = uniform && p.uniform;
+        n += p.cells.size();
+    }
+    if (uniform || n == 0)
+    {
+        return Zero;
+    }
+    // One row per cell, in the parts' order
+    Map<label> row(2*n);
+    patchSystem sys;
+    sys.V.setSize(n);
+    n = 0;
+    for (const patchPart& p : parts)
+    {
+        forAll(p.cells, i)
+        {
+            if (row.insert(p.cells[i], n))
+            {
+                sys.V[n++] = p.V[i];
+            }
+        }
+    }
+    sys.V.setSize(n);
+    const auto rowOf = [&](const label g)
+    {
+        const auto iter = row.cfind(g);
+        return g < 0 || !iter.found() ? -1 : *iter;
+    };
+    List<labelList> shapeRows(1);
+    List<DynamicList<scalar>> shapeWeights(1);
+    DynamicList<label> rows;
+    for (const patchPart& p : parts)
+    {
+        forAll(p.own, j)
+        {
+            const label lo = rowOf(p.own[j]);
+            const label ln = rowOf(p.nei[j]);
+            if (lo < 0 && ln < 0)
+            {
+                continue;
+            }
+            sys.own.append(lo);
+            sys.nei.append(ln);
+            sys.coeff.append(p.coeff[j]);
+            sys.weight.append(p.weight[j]);
+            sys.magSf.append(p.magSf[j]);
+            sys.Sf.append(p.Sf[j]);
+            sys.corr.append(p.corr[j]);
+            sys.outAt.append(p.outAt[j]);
+        }
+        forAll(p.bRow, j)
+        {
+            sys.bRow.append(rowOf(p.bRow[j]));
+            sys.bAt.append(p.bAt[j]);
+            sys.bSf.append(p.bSf[j]);
+            sys.bCoeff.append(p.bCoeff[j]);
+        }
+        forAll(p.shapeCells, j)
+        {
+            const label r = rowOf(p.shapeCells[j]);
+            if (r >= 0)
+            {
+                rows.append(r);
+                shapeWeights[0].append(p.shapeWeights[j]);
+            }
+        }
+    }
+    shapeRows[0].transfer(rows);
+    return solvePatch
+    (
+        sys, List<point>(1, x), shapeRows, shapeWeights,
+        wallPoint, wallNormal, imageSign
+    )[0];
+}
+
+
+Foam::Ostream& Foam::operator<<
+(
+    Ostream& os,
+    const shapeSelfField::patchPart& p
+)
+{
+    os  << p.cells << p.V << p.own << p.nei << p.coeff << p.weight
+        << p.magSf << p.Sf << p.corr << p.outAt << p.bRow << p.bAt << p.bSf
+        << p.bCoeff << p.shapeCells << p.shapeWeights << p.uniform;
+    return os;
+}
+
+
+Foam::Istream& Foam::operator>>(Istream& is, shapeSelfField::patchPart& p)
+{
+    is  >> p.cells >> p.V >> p.own >> p.nei >> p.coeff >> p.weight
+        >> p.magSf >> p.Sf >> p.corr >> p.outAt >> p.bRow >> p.bAt >> p.bSf
+        >> p.bCoeff >> p.shapeCells >> p.shapeWeights >> p.uniform;
+    return is;
 }
 
 
