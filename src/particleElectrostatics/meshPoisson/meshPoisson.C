@@ -1257,11 +1257,14 @@ void Foam::meshPoisson::removeSelfFields
     }
     // In parallel a shape split between processors is solved by its owner
     // on the patch gathered from every processor, unless imaged on any
+    // (meshUniform_ is the same on every processor, true in serial)
+    const bool gatherPatches = !meshUniform_;
     DynamicList<label> split;
     DynamicList<scalar> splitVref;
-    scalarField imaged(wImaged);
-    if (Pstream::parRun())
+    scalarField imaged;
+    if (gatherPatches)
     {
+        imaged = wImaged;
         halo_->sumToOwners(imaged);
     }
     const scalarField& V = mesh_.V().field();
@@ -1277,7 +1280,7 @@ void Foam::meshPoisson::removeSelfFields
         {
             if
             (
-                splitHere && !meshUniform_ && Pstream::parRun()
+                splitHere && gatherPatches
              && i < halo_->nLocal() && !(imaged[i] > 0)
              && shapeStart_[i + 1] > shapeStart_[i]
             )
@@ -1321,11 +1324,7 @@ void Foam::meshPoisson::removeSelfFields
              && mag(self)
               > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self);
         }
-        if
-        (
-            atCharge && Pstream::parRun() && !meshUniform_
-         && patchCrossesProcessors(xs_[i])
-        )
+        if (atCharge && gatherPatches && patchCrossesProcessors(xs_[i]))
         {
             // Its patch reaches another processor's cells: solved on the
             // patch gathered from them (at the points it is cut there)
@@ -1342,7 +1341,7 @@ void Foam::meshPoisson::removeSelfFields
         }
         shapeField_[i] -= qw*s;
     }
-    if (Pstream::parRun() && !meshUniform_)
+    if (gatherPatches)
     {
         removeSplitSelfFields(split, splitVref, neighbourhood, shape, wallPlane);
     }
@@ -1689,8 +1688,11 @@ void Foam::meshPoisson::solve()
         );
         if (Pstream::parRun())
         {
-            globalCells_.reset(new globalIndex(mesh_.nCells()));
-            cellGid_ = identity(mesh_.nCells(), globalCells_->localStart());
+            cellGid_ =
+                identity
+                (
+                    mesh_.nCells(), globalIndex(mesh_.nCells()).localStart()
+                );
             syncTools::swapBoundaryCellList(mesh_, cellGid_, neighbourGid_);
             // Uniform on every processor, with one cell volume
             const scalarField& V = mesh_.V().field();

@@ -9,6 +9,7 @@
 #include "surfaceFields.H"
 #include "processorPolyPatch.H"
 #include "Map.H"
+#include "UIndirectList.H"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -280,28 +281,6 @@ Foam::label Foam::shapeSelfField::holdingCell
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-// * * * * * * * * * * * * * * * The patch system  * * * * * * * * * * * * * //
-
-//- A patch's equations, in patch-local rows: each face once with the row of
-//  each side (-1: a cell around the patch, holding the exact value at
-//  outAt, in the patch's unfolded frame) and its coefficient, interpolation
-//  weight, area vector and non-orthogonal correction vector; each boundary
-//  face with a fixed value (at bAt); each row's cell volume. Nothing in it
-//  refers to the mesh it came from
-struct Foam::shapeSelfField::patchSystem
-{
-    scalarField V;
-    DynamicList<label> own, nei;
-    DynamicList<scalar> coeff, weight, magSf;
-    DynamicList<vector> Sf, corr;
-    DynamicList<point> outAt;
-    DynamicList<label> bRow;
-    DynamicList<point> bAt;
-    DynamicList<vector> bSf;
-    DynamicList<scalar> bCoeff;
-};
-
 
 namespace
 {
@@ -836,51 +815,35 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
         local_[patchCells[i]] = i;
     }
     DynamicList<label> bFaceOf;
-    const patchSystem sys(assemblePatch(patchCells, patchShifts, &bFaceOf));
+    patchPart p;
+    p.sys = assemblePatch(patchCells, patchShifts, &bFaceOf);
     forAll(patchCells, i)
     {
         local_[patchCells[i]] = -1;
     }
-
-    patchPart p;
     p.uniform = uniformAmong(patchCells, Vref);
-    p.cells.setSize(patchCells.size());
-    forAll(patchCells, i)
+    p.cells = UIndirectList<label>(cellGid, patchCells)();
+    p.shapeCells = UIndirectList<label>(cellGid, shapeCells)();
+    p.shapeWeights = shapeWeights;
+
+    // Rows named by their cells' global ids
+    patchSystem& sys = p.sys;
+    for (label& row : sys.own)
     {
-        p.cells[i] = cellGid[patchCells[i]];
+        row = row < 0 ? -1 : p.cells[row];
     }
-    p.V = sys.V;
-    const auto gid = [&](const label row) { return row < 0 ? -1 : p.cells[row]; };
-    DynamicList<label> own(sys.own.size()), nei(sys.own.size());
-    DynamicList<scalar> coeff(sys.own.size()), weight(sys.own.size());
-    DynamicList<scalar> magSf(sys.own.size());
-    DynamicList<vector> Sf(sys.own.size()), corr(sys.own.size());
-    DynamicList<point> outAt(sys.own.size());
-    const auto addFace = [&](const label j, const label o, const label n, const point& at)
+    for (label& row : sys.nei)
     {
-        own.append(o);
-        nei.append(n);
-        coeff.append(j < 0 ? 0 : sys.coeff[j]);
-        weight.append(j < 0 ? 0 : sys.weight[j]);
-        magSf.append(j < 0 ? 0 : sys.magSf[j]);
-        Sf.append(j < 0 ? Zero : sys.Sf[j]);
-        corr.append(j < 0 ? Zero : sys.corr[j]);
-        outAt.append(at);
-    };
-    forAll(sys.own, j)
-    {
-        addFace(j, gid(sys.own[j]), gid(sys.nei[j]), sys.outAt[j]);
+        row = row < 0 ? -1 : p.cells[row];
     }
+
     // Faces on processor patches: to a cell of the patch on the other side
-    // (once, from the side of the smaller id) or to a cell around it,
-    // with the exact value at its centre, as an internal face of a serial
-    // mesh would be
+    // (once, from the side of the smaller id) or to a cell around it, with
+    // the exact value at its centre, as an internal face of a serial mesh
+    // would be; the other boundary faces keep their fixed values
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const label nInternal = mesh_.nInternalFaces();
-    DynamicList<label> bRow;
-    DynamicList<point> bAt;
-    DynamicList<vector> bSf;
-    DynamicList<scalar> bCoeff;
+    label nb = 0;
     forAll(sys.bRow, j)
     {
         const label f = bFaceOf[j];
@@ -888,10 +851,11 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
         const label me = p.cells[sys.bRow[j]];
         if (!isA<processorPolyPatch>(pbm[patchi]))
         {
-            bRow.append(me);
-            bAt.append(sys.bAt[j]);
-            bSf.append(sys.bSf[j]);
-            bCoeff.append(sys.bCoeff[j]);
+            sys.bRow[nb] = me;
+            sys.bAt[nb] = sys.bAt[j];
+            sys.bSf[nb] = sys.bSf[j];
+            sys.bCoeff[nb] = sys.bCoeff[j];
+            ++nb;
             continue;
         }
         const label facei = f - pbm[patchi].start();
@@ -901,33 +865,22 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
         {
             continue;
         }
-        own.append(me);
-        nei.append(inPatch ? other : -1);
-        coeff.append(sys.bCoeff[j]);
-        weight.append(mesh_.weights().boundaryField()[patchi][facei]);
-        magSf.append(mesh_.magSf().boundaryField()[patchi][facei]);
-        Sf.append(sys.bSf[j]);
-        corr.append(mesh_.nonOrthCorrectionVectors().boundaryField()[patchi][facei]);
-        outAt.append(sys.bAt[j]);
+        sys.own.append(me);
+        sys.nei.append(inPatch ? other : -1);
+        sys.coeff.append(sys.bCoeff[j]);
+        sys.weight.append(mesh_.weights().boundaryField()[patchi][facei]);
+        sys.magSf.append(mesh_.magSf().boundaryField()[patchi][facei]);
+        sys.Sf.append(sys.bSf[j]);
+        sys.corr.append
+        (
+            mesh_.nonOrthCorrectionVectors().boundaryField()[patchi][facei]
+        );
+        sys.outAt.append(sys.bAt[j]);
     }
-    p.own.transfer(own);
-    p.nei.transfer(nei);
-    p.coeff.transfer(coeff);
-    p.weight.transfer(weight);
-    p.magSf.transfer(magSf);
-    p.Sf.transfer(Sf);
-    p.corr.transfer(corr);
-    p.outAt.transfer(outAt);
-    p.bRow.transfer(bRow);
-    p.bAt.transfer(bAt);
-    p.bSf.transfer(bSf);
-    p.bCoeff.transfer(bCoeff);
-    p.shapeCells.setSize(shapeCells.size());
-    forAll(shapeCells, j)
-    {
-        p.shapeCells[j] = cellGid[shapeCells[j]];
-    }
-    p.shapeWeights = shapeWeights;
+    sys.bRow.setSize(nb);
+    sys.bAt.setSize(nb);
+    sys.bSf.setSize(nb);
+    sys.bCoeff.setSize(nb);
     return p;
 }
 
@@ -963,7 +916,7 @@ Foam::vector Foam::shapeSelfField::solveParts
         {
             if (row.insert(p.cells[i], n))
             {
-                sys.V[n++] = p.V[i];
+                sys.V[n++] = p.sys.V[i];
             }
         }
     }
@@ -978,29 +931,30 @@ Foam::vector Foam::shapeSelfField::solveParts
     DynamicList<label> rows;
     for (const patchPart& p : parts)
     {
-        forAll(p.own, j)
+        const patchSystem& ps = p.sys;
+        forAll(ps.own, j)
         {
-            const label lo = rowOf(p.own[j]);
-            const label ln = rowOf(p.nei[j]);
+            const label lo = rowOf(ps.own[j]);
+            const label ln = rowOf(ps.nei[j]);
             if (lo < 0 && ln < 0)
             {
                 continue;
             }
             sys.own.append(lo);
             sys.nei.append(ln);
-            sys.coeff.append(p.coeff[j]);
-            sys.weight.append(p.weight[j]);
-            sys.magSf.append(p.magSf[j]);
-            sys.Sf.append(p.Sf[j]);
-            sys.corr.append(p.corr[j]);
-            sys.outAt.append(p.outAt[j]);
+            sys.coeff.append(ps.coeff[j]);
+            sys.weight.append(ps.weight[j]);
+            sys.magSf.append(ps.magSf[j]);
+            sys.Sf.append(ps.Sf[j]);
+            sys.corr.append(ps.corr[j]);
+            sys.outAt.append(ps.outAt[j]);
         }
-        forAll(p.bRow, j)
+        forAll(ps.bRow, j)
         {
-            sys.bRow.append(rowOf(p.bRow[j]));
-            sys.bAt.append(p.bAt[j]);
-            sys.bSf.append(p.bSf[j]);
-            sys.bCoeff.append(p.bCoeff[j]);
+            sys.bRow.append(rowOf(ps.bRow[j]));
+            sys.bAt.append(ps.bAt[j]);
+            sys.bSf.append(ps.bSf[j]);
+            sys.bCoeff.append(ps.bCoeff[j]);
         }
         forAll(p.shapeCells, j)
         {
@@ -1027,18 +981,20 @@ Foam::Ostream& Foam::operator<<
     const shapeSelfField::patchPart& p
 )
 {
-    os  << p.cells << p.V << p.own << p.nei << p.coeff << p.weight
-        << p.magSf << p.Sf << p.corr << p.outAt << p.bRow << p.bAt << p.bSf
-        << p.bCoeff << p.shapeCells << p.shapeWeights << p.uniform;
+    const shapeSelfField::patchSystem& s = p.sys;
+    os  << p.cells << s.V << s.own << s.nei << s.coeff << s.weight
+        << s.magSf << s.Sf << s.corr << s.outAt << s.bRow << s.bAt << s.bSf
+        << s.bCoeff << p.shapeCells << p.shapeWeights << p.uniform;
     return os;
 }
 
 
 Foam::Istream& Foam::operator>>(Istream& is, shapeSelfField::patchPart& p)
 {
-    is  >> p.cells >> p.V >> p.own >> p.nei >> p.coeff >> p.weight
-        >> p.magSf >> p.Sf >> p.corr >> p.outAt >> p.bRow >> p.bAt >> p.bSf
-        >> p.bCoeff >> p.shapeCells >> p.shapeWeights >> p.uniform;
+    shapeSelfField::patchSystem& s = p.sys;
+    is  >> p.cells >> s.V >> s.own >> s.nei >> s.coeff >> s.weight
+        >> s.magSf >> s.Sf >> s.corr >> s.outAt >> s.bRow >> s.bAt >> s.bSf
+        >> s.bCoeff >> p.shapeCells >> p.shapeWeights >> p.uniform;
     return is;
 }
 
