@@ -221,6 +221,9 @@ badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
 badCase unknownSelfFieldSampling 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldSampling cells; }' \
     'Entry selfFieldSampling = cells in .* must be one of 3\(points charges auto\)'
+badCase unknownGradient 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; gradient linear; }' \
+    'Entry gradient = linear in .* must be one of 2\(leastSquares Gauss\)'
 badCase negativeNonOrthTolerance 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; nonOrthogonalTolerance -1; }' \
     'Entry nonOrthogonalTolerance = -1 in .* must be in \[0, 1\)'

@@ -12,7 +12,9 @@
 # is cut by a curved wall (grounded sphere vs Kelvin's image, grounded pipe
 # vs tests/tools/groundedCylinder.py, which checks itself first); no
 # self-force on curved and graded meshes (weak fields in the sphere, the
-# pipe and a graded box).
+# pipe and a graded box; shapes cut by curved and planar walls, solved
+# with their images); the least-squares gradient equals Gauss linear on a
+# uniform mesh and beats it on the sphere's skewed cells.
 . "$(dirname "$0")/common.sh.inc"
 
 $PY "$tools/groundedCylinder.py" --selftest
@@ -131,6 +133,18 @@ else:
     d = np.abs(E - Es).max()/np.abs(Es).max()
     report("solveInterval", d < 1e-9, f"solveInterval 3, step 2 (no solve) vs solveInterval 1: max |dE|/max|E| = {d:.1e}, tol 1e-9")
 
+# 4c. The least-squares gradient (the default) weighs a wall face as an
+#     internal face to the mirrored cell: on a uniform mesh it is Gauss
+#     linear's (central differences, a grounded wall the odd mirror), so the
+#     grounded box's field is the same with either (OpenFOAM's own
+#     leastSquares weighting differs at the walls: a self field near them)
+E = run("gaussGradient", x, q, 32, coeffs="radius 0.15; gradient Gauss;")
+if E is None or Es is None:
+    report("gradient.uniformBox", False, "run failed")
+else:
+    d = np.abs(E - Es).max()/np.abs(Es).max()
+    report("gradient.uniformBox", d < 1e-9,
+           f"100 charges in the uniform grounded box, h = 1/32: leastSquares vs Gauss max |dE|/max|E| = {d:.1e}, tol 1e-9")
 # 5. 2 processors vs serial
 Ep = run("parallel", x, q, 32, nProcs=2)
 if Es is None or Ep is None:
@@ -227,29 +241,36 @@ report("badInterpolation",
        fails_with("bad3", "radius 0.3; interpolation cellPoint;", "Entry interpolation", "cellCentroid only"),
        "interpolation with the shaped correction: FatalIOError naming the entry")
 
-# 9. Curved walls meshed as users mesh them: charges 0.1 and 0.05 radii
+# 9. Curved walls meshed as users mesh them: charges 0.1, 0.05 and 0.165 radii
 #    from the wall of a grounded sphere (projected blocks, vs Kelvin's
 #    image) and of a grounded pipe (O-grid, vs the exact cylinder series),
 #    their shapes (radius 0.2) cut by the wall and imaged in the wall's
 #    tangent plane at their foot (the surface fitted through the wall's
 #    points: the faces' own planes are chords, too close by their sag),
 #    mean cell size 1/32 of the cavity; non-orthogonal correctors until
-#    converged (the default on these meshes)
+#    converged (the default on these meshes). The shapes' own field on
+#    the curved mesh is removed with their images (a patch solve at the
+#    charge); the exact field is radial, so any tangential part is error
 sys.path.insert(0, top + "/applications/benchmarks/meshFarField")
 import curvedCavities as cc
 for cavity, n in (("sphere", 13), ("pipe", 14)):
-    u = np.array([1.0, 2.0, 2.0])/3 if cavity == "sphere" else np.array([0.6, 0.8, 0.0])
     centre = np.array([0, 0, 1.0]) if cavity == "pipe" else np.zeros(3)
     mesh = cc.pipe_blockmesh(1.0, 2.0, n) if cavity == "pipe" else cc.sphere_blockmesh(1.0, n)
-    e = []
-    for rr in (0.9, 0.95):
+    e, tang = [], []
+    for u, rr in (([1.0, 2.0, 2.0], 0.9), ([1.0, 2.0, 2.0], 0.95), ([0.61, -0.277, 0.499], 0.835)):
+        u = np.array(u)
+        if cavity == "pipe":
+            u[2] = 0
+        u /= np.linalg.norm(u)
         xc = np.array([centre + rr*u]); qc = np.array([1e-9])
         ref = cc.cylinder_field(xc, qc, 1.0, 2.0) if cavity == "pipe" else cc.kelvin_field(xc, qc, 1.0)
         E = run(f"{cavity}{n}_{rr}", xc, qc, n, coeffs="radius 0.2;", blockMesh=mesh)
-        e.append(np.linalg.norm(E - ref)/np.linalg.norm(ref) if E is not None else np.inf)
-    report(f"curvedWall.{cavity}", max(e) < 0.03,
-           f"n = {n}, charges 0.1 and 0.05 radii from the wall, shape radius 0.2: force error "
-           f"{e[0]:.2e}, {e[1]:.2e} (< 0.03)")
+        d = E[0] - ref[0] if E is not None else np.full(3, np.inf)
+        e.append(np.linalg.norm(d)/np.linalg.norm(ref))
+        tang.append(np.linalg.norm(d - (d @ u)*u)/np.linalg.norm(ref))
+    report(f"curvedWall.{cavity}", max(e) < 0.01,
+           f"n = {n}, charges 0.1, 0.05 and 0.165 radii from the wall, shape radius 0.2: force error "
+           f"{e[0]:.2e}, {e[1]:.2e}, {e[2]:.2e} (< 0.01; tangential part {max(tang):.1e})")
 
 # 10. No self-force on curved and graded meshes: single charges where the
 #     exact field is weak (0.3 and 0.6 radii from the centre or axis), so
@@ -388,7 +409,30 @@ for name, xs, qs in split_cases:
         continue
     err = {k: np.max(np.linalg.norm(E - ref, axis=1)/np.linalg.norm(ref, axis=1)) for k, E in Es.items()}
     dp = max(np.max(np.linalg.norm(Es[k] - Es[1], axis=1)/np.linalg.norm(Es[1], axis=1)) for k in (2, 4))
-    report(f"selfField.split.{name}", dp < 1e-6,
+    report(f"selfField.split.{name}", dp < 1e-6 and max(err.values()) < 0.05,
            f"sphere n = 13, shape across the processor plane: serial vs 2 and 4 processors {dp:.1e} (tol 1e-6); "
-           f"force error serial / 2 / 4: {err[1]:.2e} / {err[2]:.2e} / {err[4]:.2e}")
+           f"force error serial / 2 / 4: {err[1]:.2e} / {err[2]:.2e} / {err[4]:.2e} (< 0.05)")
+    if name == "pair":
+        # The weak pair with OpenFOAM's Gauss linear gradient: its face
+        # interpolation misses the skewed faces' centres
+        E = run("split_pair_gauss", xs, qs, 13, coeffs="radius 0.2; gradient Gauss;", blockMesh=mesh)
+        eg = np.max(np.linalg.norm(E - ref, axis=1)/np.linalg.norm(ref, axis=1)) if E is not None else np.inf
+        report("gradient.sphere", err[1] < 0.05 and err[1] < eg,
+               f"the weak pair (4.5-5.2 V/m) in the sphere, n = 13: force error leastSquares {err[1]:.2e} (< 0.05), "
+               f"Gauss {eg:.2e}")
+# 15. Shapes cut by the planar walls of the graded box (a face, an edge, a
+#     corner: images of images), their images exact for planar walls, the
+#     self field solved at the charge with its images: against the image
+#     sums, and against the points' sampling, which keeps a cut shape's
+#     self field
+mesh = cc.graded_box_blockmesh(2.0, 32, 3)
+e, kept = [], []
+for k, xk in enumerate(([0.1, 1.0, 0.9], [0.1, 0.12, 1.1], [0.12, 0.1, 0.14], [1.88, 1.9, 1.85])):
+    xs = np.array([xk]); qs = np.array([1e-9]); ref = gb.field(xs, qs, 2.0)
+    for coeffs, out in (("radius 0.2;", e), ("radius 0.2; selfFieldSampling points;", kept)):
+        E = run(f"cutBox_{k}_{len(out)}_{'points' in coeffs}", xs, qs, 32, coeffs=coeffs, blockMesh=mesh)
+        out.append(np.linalg.norm(E - ref)/np.linalg.norm(ref) if E is not None else np.inf)
+report("selfField.cutByWalls", max(e) < 1e-3 and min(kept) > 10*max(e),
+       f"graded box n = 32, shapes cut by a face, an edge and two corners: force error {', '.join(f'{v:.1e}' for v in e)} "
+       f"(< 1e-3); self field kept (points): {', '.join(f'{v:.1e}' for v in kept)}")
 PYEOF

@@ -50,6 +50,29 @@ Foam::meshPoisson::selfFieldSamplingTypeNames
 
 namespace
 {
+    //- The entry key of dict, one of names (default deflt), or a
+    //  FatalIOError naming the entry and the allowed words
+    template<class EnumType>
+    EnumType readChoice
+    (
+        const Foam::dictionary& dict,
+        const Foam::word& key,
+        const Foam::Enum<EnumType>& names,
+        const EnumType deflt,
+        const char* meaning
+    )
+    {
+        const Foam::word w(dict.lookupOrDefault<Foam::word>(key, names[deflt]));
+        if (!names.found(w))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry " << key << " = " << w << " in "
+                << dict.name().c_str() << " must be one of " << names.names()
+                << " (" << meaning << ")" << Foam::exit(Foam::FatalIOError);
+        }
+        return names[w];
+    }
+
     // Volt = kg m^2 s^-3 A^-1
     const Foam::dimensionSet dimPotential(1, 2, -3, 0, 0, -1, 0);
     const Foam::dimensionSet dimChargeDensity(0, -3, 1, 0, 0, 1, 0);
@@ -172,24 +195,11 @@ Foam::scalar Foam::meshPoisson::readSelfFieldRadius() const
 Foam::meshPoisson::selfFieldSamplingType
 Foam::meshPoisson::readSelfFieldSampling() const
 {
-    const word key("selfFieldSampling");
-    const word w
+    return readChoice
     (
-        coeffs_.lookupOrDefault<word>
-        (
-            key,
-            selfFieldSamplingTypeNames[selfFieldSamplingType::automatic]
-        )
+        coeffs_, "selfFieldSampling", selfFieldSamplingTypeNames,
+        selfFieldSamplingType::automatic, "where the self field is found"
     );
-    if (!selfFieldSamplingTypeNames.found(w))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry " << key << " = " << w << " in "
-            << coeffs_.name().c_str() << " must be one of "
-            << selfFieldSamplingTypeNames.names()
-            << " (where the self field is found)" << exit(FatalIOError);
-    }
-    return selfFieldSamplingTypeNames[w];
 }
 
 
@@ -1259,6 +1269,8 @@ void Foam::meshPoisson::removeSelfFields
     // on the patch gathered from every processor, unless imaged on any
     // (meshUniform_ is the same on every processor, true in serial)
     const bool gatherPatches = !meshUniform_;
+    // Each charge's sources: itself, its copies and its images
+    const labelListList sourcesOf(invertOneToMany(nReal, origin));
     DynamicList<label> split;
     DynamicList<scalar> splitVref;
     scalarField imaged;
@@ -1275,7 +1287,12 @@ void Foam::meshPoisson::removeSelfFields
         // processors and owned elsewhere); its cell: the one of its own
         // (not a copy's) with the largest weight
         const bool splitHere =
-            wLocal[i] < (1 - 1e-12)*shapeSum_[i];
+            wLocal[i] + wImaged[i] < (1 - 1e-12)*shapeSum_[i];
+        if (wImaged[i] > 0 && !splitHere)
+        {
+            removeImagedSelfField(i, sourcesOf[i], neighbourhood);
+            continue;
+        }
         if (wImaged[i] > 0 || splitHere)
         {
             if
@@ -1345,6 +1362,80 @@ void Foam::meshPoisson::removeSelfFields
     {
         removeSplitSelfFields(split, splitVref, neighbourhood, shape, wallPlane);
     }
+}
+
+
+template<class Neighbourhood>
+void Foam::meshPoisson::removeImagedSelfField
+(
+    const label i,
+    const labelUList& sources,
+    const Neighbourhood& neighbourhood
+)
+{
+    // Solved at the charge (its images move with it: no points' cache),
+    // unless the self fields are only sampled at the points
+    if (selfFieldSampling_ == selfFieldSamplingType::points)
+    {
+        return;
+    }
+    const label nReal = shapeSum_.size();
+    shapeSelfField::localProblem lp;
+    lp.shaped = true;
+    DynamicList<point> x(1, xs_[i]);
+    DynamicList<scalar> q(1, scalar(1));
+    DynamicList<tensor> T(1, tensor::I);
+    DynamicList<label> rows;
+    DynamicList<scalar> w;
+    DynamicList<label> src;
+    label celli = -1;
+    scalar wMax = 0;
+    lp.exact = Zero;
+    const pairwiseCoulomb coulomb(epsilonR_);
+    for (const label k : sources)
+    {
+        if (k >= nReal)
+        {
+            if (sourceSign_[k] == 1 && sourceT_[k] == tensor::I)
+            {
+                // A cyclic copy: its cells lie across the cyclic patch
+                return;
+            }
+            // The images' force on the whole shape (H&E Eq. 8-73)
+            const vector r(xs_[i] - xs_[k]);
+            const scalar mr = mag(r);
+            lp.exact +=
+                sourceSign_[k]*(1 - shapedCorrection(mr/radius_))
+               *coulomb.k()/pow3(mr)*r;
+            x.append(xs_[k]);
+            q.append(sourceSign_[k]);
+            T.append(sourceT_[k]);
+        }
+        for (label j = shapeStart_[k]; j < shapeStart_[k + 1]; ++j)
+        {
+            rows.append(shapeCells_[j]);
+            w.append(shapeWeights_[j]);
+            src.append(x.size() - 1);
+            if (k == i && shapeWeights_[j] > wMax)
+            {
+                wMax = shapeWeights_[j];
+                celli = shapeCells_[j];
+            }
+        }
+    }
+    if (celli < 0)
+    {
+        return;
+    }
+    lp.x.transfer(x);
+    lp.q.transfer(q);
+    lp.T.transfer(T);
+    lp.rows.transfer(rows);
+    lp.w.transfer(w);
+    lp.src.transfer(src);
+    shapeField_[i] -=
+        qs_[i]*sum(lp.w)
+       *selfField_->imagedFieldAtCharge(xs_[i], celli, neighbourhood, lp);
 }
 
 
@@ -1504,6 +1595,16 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     nonOrthTolerance_(readNonOrthTolerance()),
     selfFieldRadius_(readSelfFieldRadius()),
     selfFieldSampling_(readSelfFieldSampling()),
+    gradient_
+    (
+        mesh,
+        readChoice
+        (
+            coeffs, "gradient", potentialGradient::schemeTypeNames,
+            potentialGradient::schemeType::leastSquares,
+            "the potential's gradient"
+        )
+    ),
     nEvaluations_(0),
     solved_(false),
     periodicShifts_(),
@@ -1544,7 +1645,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             IOobject::NO_READ,
             IOobject::AUTO_WRITE
         ),
-        -fvc::grad(Phi_)
+        -gradient_.grad(Phi_)
     ),
     shapeFresh_(false),
     farValid_(false),
@@ -1669,13 +1770,14 @@ void Foam::meshPoisson::solve()
      && !selfField_.valid()
     )
     {
-        fvScalarMatrix L(fvm::laplacian(eps, Phi_));
+        fvScalarMatrix L(gradient_.laplacian(eps, Phi_));
         placeOnWallSurface(L);
         selfField_.reset
         (
             new shapeSelfField
             (
                 mesh_,
+                gradient_,
                 epsilonR_,
                 L.upper(),
                 L.internalCoeffs(),
@@ -1708,7 +1810,7 @@ void Foam::meshPoisson::solve()
     {
         fvScalarMatrix PhiEqn
         (
-            fvm::laplacian(eps, Phi_) + rho
+            gradient_.laplacian(eps, Phi_) + rho
         );
         placeOnWallSurface(PhiEqn);
         // Only used when no patch fixes the potential
@@ -1721,7 +1823,7 @@ void Foam::meshPoisson::solve()
         }
     }
 
-    E_ = -fvc::grad(Phi_);
+    E_ = -gradient_.grad(Phi_);
     if (correction_ == correctionType::cellCentroid)
     {
         EInterp_ = interpolation<vector>::New(interpolationScheme_, E_);

@@ -21,6 +21,7 @@
 Foam::shapeSelfField::shapeSelfField
 (
     const fvMesh& mesh,
+    const potentialGradient& gradient,
     const scalar epsilonR,
     const scalarField& upper,
     const FieldField<Field, scalar>& internalCoeffs,
@@ -32,6 +33,7 @@ Foam::shapeSelfField::shapeSelfField
 )
 :
     mesh_(mesh),
+    gradient_(gradient),
     eps_(pairwiseCoulomb::vacuumPermittivity*epsilonR),
     k_(pairwiseCoulomb(epsilonR).k()),
     patchRadius_(patchRadius),
@@ -346,32 +348,41 @@ Eigen::SparseMatrix<double> patchMatrix(const System& sys)
 
 
 //- The exact potential per unit charge (and its gradient) at the cells
-//  around the patch and at the boundary points: the charge at x in free
-//  space, or with its image (imageSign, at xImage) in the nearest wall's
-//  plane; k the Coulomb constant
+//  around the patch and at the boundary points: the sources of the local
+//  problem lp in free space (point charges, or S2 shapes of radius R); k
+//  the Coulomb constant
 template<class System>
 void exactValues
 (
     const System& sys,
-    const point& x,
-    const point& xImage,
-    const scalar imageSign,
+    const shapeSelfField::localProblem& lp,
+    const scalar R,
     const scalar k,
     patchValues& out
 )
 {
     const auto exact = [&](const point& y, scalar& phiY, vector& gradY)
     {
-        const vector r(y - x);
-        const scalar mr = mag(r);
-        phiY = k/mr;
-        gradY = (-k/pow3(mr))*r;
-        if (imageSign != 0)
+        phiY = 0;
+        gradY = Zero;
+        forAll(lp.x, a)
         {
-            const vector ri(y - xImage);
-            const scalar mri = mag(ri);
-            phiY += imageSign*k/mri;
-            gradY -= (imageSign*k/pow3(mri))*ri;
+            const vector r(y - lp.x[a]);
+            const scalar mr = mag(r);
+            const scalar kq = k*lp.q[a];
+            if (lp.shaped && mr < R)
+            {
+                // The S2 shape's potential within R: its charge within r
+                // is q (4 xi^3 - 3 xi^4), xi = r/R (H&E section 8-3)
+                const scalar xi = mr/R;
+                phiY += kq*(2 - 2*sqr(xi) + pow3(xi))/R;
+                gradY -= (kq*(4 - 3*xi)/pow3(R))*r;
+            }
+            else
+            {
+                phiY += kq/mr;
+                gradY -= (kq/pow3(mr))*r;
+            }
         }
     };
     vector unused;
@@ -389,10 +400,12 @@ void exactValues
 }
 
 
-//- Gauss linear gradient g of a potential p at the patch's rows, with the
-//  fixed values around (fixed) or zero there (the part linear in p alone)
+//- The gradient g of a potential p at the patch's rows (the mesh's:
+//  least squares, or Gauss linear where the system has no least-squares
+//  vectors), with the fixed values around (fixed) or zero there (the part
+//  linear in p alone)
 template<class System>
-void gaussGrad
+void patchGrad
 (
     const System& sys,
     const patchValues& out,
@@ -402,6 +415,30 @@ void gaussGrad
 )
 {
     g = Zero;
+    if (sys.lsOwn.size())
+    {
+        forAll(sys.own, j)
+        {
+            const label lo = sys.own[j], ln = sys.nei[j];
+            const scalar o = fixed ? out.phiOut[j] : 0;
+            const scalar delta =
+                (ln >= 0 ? p[ln] : o) - (lo >= 0 ? p[lo] : o);
+            if (lo >= 0)
+            {
+                g[lo] += sys.lsOwn[j]*delta;
+            }
+            if (ln >= 0)
+            {
+                g[ln] -= sys.lsNei[j]*delta;
+            }
+        }
+        forAll(sys.bRow, j)
+        {
+            const label r = sys.bRow[j];
+            g[r] += sys.bLs[j]*((fixed ? out.phiB[j] : 0) - p[r]);
+        }
+        return;
+    }
     forAll(sys.own, j)
     {
         const label lo = sys.own[j], ln = sys.nei[j];
@@ -541,6 +578,7 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
     const surfaceScalarField& magSf = mesh_.magSf();
     const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const bool ls = gradient_.leastSquares();
 
     patchSystem sys;
     sys.V.setSize(patchCells.size());
@@ -553,9 +591,14 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
         (
             const label lo, const label ln, const scalar a, const scalar w,
             const vector& sf, const scalar msf, const vector& corr,
-            const point& outAt
+            const point& outAt, const vector& lsOwn, const vector& lsNei
         )
     {
+        if (ls)
+        {
+            sys.lsOwn.append(lsOwn);
+            sys.lsNei.append(lsNei);
+        }
         sys.own.append(lo);
         sys.nei.append(ln);
         sys.coeff.append(a);
@@ -585,7 +628,9 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
                     addFace
                     (
                         lo, ln, internalCoeff_[f], weights[f], Sf[f],
-                        magSf[f], corrVec[f], C[o] + shift
+                        magSf[f], corrVec[f], C[o] + shift,
+                        ls ? gradient_.ownVector(f) : Zero,
+                        ls ? gradient_.neiVector(f) : Zero
                     );
                 }
                 continue;
@@ -624,7 +669,9 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
                             Sf.boundaryField()[patchi][facei],
                             magSf.boundaryField()[patchi][facei],
                             corrVec.boundaryField()[patchi][facei],
-                            point::zero
+                            point::zero,
+                            ls ? gradient_.boundaryVector(f) : Zero,
+                            ls ? gradient_.boundaryNeighbourVector(f) : Zero
                         );
                     }
                     continue;
@@ -638,9 +685,81 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
             sys.bAt.append(at);
             sys.bSf.append(Sf.boundaryField()[patchi][facei]);
             sys.bCoeff.append(b);
+            if (ls)
+            {
+                sys.bLs.append(gradient_.boundaryVector(f));
+            }
         }
     }
     return sys;
+}
+
+
+Foam::shapeSelfField::localProblem Foam::shapeSelfField::pointProblem
+(
+    const point& x,
+    const labelUList& rows,
+    const UList<scalar>& weights,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    localProblem lp;
+    lp.x.setSize(1, x);
+    lp.q.setSize(1, 1);
+    lp.T.setSize(1, tensor::I);
+    lp.shaped = false;
+    lp.rows = rows;
+    lp.w = weights;
+    lp.src.setSize(rows.size(), 0);
+    lp.exact = Zero;
+    if (imageSign != 0)
+    {
+        // The image in the wall's plane, its exact field subtracted
+        const point xImage
+        (
+            x - 2*((x - wallPoint) & wallNormal)*wallNormal
+        );
+        lp.x.append(xImage);
+        lp.q.append(imageSign);
+        lp.T.append(tensor::I - 2*sqr(wallNormal));
+        const vector ri(x - xImage);
+        lp.exact = (imageSign*k_/pow3(mag(ri)))*ri;
+    }
+    return lp;
+}
+
+
+Foam::vector Foam::shapeSelfField::solveProblem
+(
+    const UList<label>& patchCells,
+    const UList<vector>& patchShifts,
+    const localProblem& lp
+) const
+{
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = i;
+    }
+    List<localProblem> problems(1, lp);
+    labelList& rows = problems[0].rows;
+    bool inPatch = true;
+    for (label& r : rows)
+    {
+        r = local_[r];
+        inPatch = inPatch && r >= 0 && magSqr(patchShifts[r]) == 0;
+    }
+    vector result(Zero);
+    if (inPatch)
+    {
+        result = solvePatch(assemblePatch(patchCells, patchShifts), problems)[0];
+    }
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = -1;
+    }
+    return result;
 }
 
 
@@ -674,22 +793,23 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
     {
         local_[patchCells[i]] = -1;
     }
-    return solvePatch
-    (
-        sys, xs, shapeRows, shapeWeights, wallPoint, wallNormal, imageSign
-    );
+    List<localProblem> problems(xs.size());
+    forAll(xs, s)
+    {
+        problems[s] = pointProblem
+        (
+            xs[s], shapeRows[s], shapeWeights[s],
+            wallPoint, wallNormal, imageSign
+        );
+    }
+    return solvePatch(sys, problems);
 }
 
 
 Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
 (
     const patchSystem& sys,
-    const UList<point>& xs,
-    const UList<labelList>& shapeRows,
-    const UList<DynamicList<scalar>>& shapeWeights,
-    const point& wallPoint,
-    const vector& wallNormal,
-    const scalar imageSign
+    const UList<localProblem>& problems
 ) const
 {
     const label n = sys.V.size();
@@ -703,25 +823,20 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
     // field's cost) runs about 1.5x faster with the same result
     const patchFactorisation ldlt(M);
 
-    List<vector> result(xs.size(), Zero);
+    List<vector> result(problems.size(), Zero);
     patchValues out;
     out.phiOut.setSize(sys.own.size());
     out.gradOut.setSize(sys.own.size());
     out.phiB.setSize(sys.bRow.size());
     vectorField g(n);
-    forAll(xs, s)
+    forAll(problems, s)
     {
-        const point& x = xs[s];
-        const labelUList& rows = shapeRows[s];
-        const UList<scalar>& w = shapeWeights[s];
+        const localProblem& lp = problems[s];
+        const labelUList& rows = lp.rows;
+        const UList<scalar>& w = lp.w;
+        exactValues(sys, lp, shapeRadius_, k, out);
 
-        const point xImage
-        (
-            x - 2*((x - wallPoint) & wallNormal)*wallNormal
-        );
-        exactValues(sys, x, xImage, imageSign, k, out);
-
-        // The shape's charge and the fixed values
+        // The shapes' charges and the fixed values
         Eigen::VectorXd rhs0(Eigen::VectorXd::Zero(n));
         scalar wSum = 0;
         forAll(w, j)
@@ -730,7 +845,7 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
         }
         forAll(rows, j)
         {
-            rhs0[rows[j]] += w[j]/wSum;
+            rhs0[rows[j]] += lp.q[lp.src[j]]*w[j]/wSum;
         }
         forAll(sys.own, j)
         {
@@ -757,11 +872,11 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
         }
         else
         {
-            gaussGrad(sys, out, Eigen::VectorXd::Zero(n), true, g);
+            patchGrad(sys, out, Eigen::VectorXd::Zero(n), true, g);
             phi = ldlt.solve(rhs0 + nonOrthCorrection(sys, out, g, eps_, true));
             const auto A = [&](const Eigen::VectorXd& v)
             {
-                gaussGrad(sys, out, v, false, g);
+                patchGrad(sys, out, v, false, g);
                 return Eigen::VectorXd
                 (
                     v - ldlt.solve(nonOrthCorrection(sys, out, g, eps_, false))
@@ -770,20 +885,19 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
             gmres(A, phi, nNonOrthCorr_, tolerance_);
         }
 
-        // The shape's average of -grad(Phi)
-        gaussGrad(sys, out, phi, true, g);
+        // The average of -grad(Phi) over the charge's shape: a part from
+        // an image's cells is mapped back (sign T^T E, as
+        // meshPoisson::averageOverShapes); less the exact field of the
+        // local problem, what is left is the mesh's error on it
+        patchGrad(sys, out, phi, true, g);
         forAll(rows, j)
         {
-            result[s] -= w[j]*g[rows[j]];
+            const label a = lp.src[j];
+            const vector wg(w[j]*g[rows[j]]);
+            result[s] -= a == 0 ? wg : lp.q[a]*(lp.T[a].T() & wg);
         }
         result[s] /= wSum;
-        if (imageSign != 0)
-        {
-            // Less the image's exact field: what is left is the mesh's
-            // error on this local problem
-            const vector ri(x - xImage);
-            result[s] -= (imageSign*k/pow3(mag(ri)))*ri;
-        }
+        result[s] -= lp.exact;
     }
     return result;
 }
@@ -855,6 +969,10 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
             sys.bAt[nb] = sys.bAt[j];
             sys.bSf[nb] = sys.bSf[j];
             sys.bCoeff[nb] = sys.bCoeff[j];
+            if (gradient_.leastSquares())
+            {
+                sys.bLs[nb] = sys.bLs[j];
+            }
             ++nb;
             continue;
         }
@@ -876,11 +994,20 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
             mesh_.nonOrthCorrectionVectors().boundaryField()[patchi][facei]
         );
         sys.outAt.append(sys.bAt[j]);
+        if (gradient_.leastSquares())
+        {
+            sys.lsOwn.append(gradient_.boundaryVector(f));
+            sys.lsNei.append(gradient_.boundaryNeighbourVector(f));
+        }
     }
     sys.bRow.setSize(nb);
     sys.bAt.setSize(nb);
     sys.bSf.setSize(nb);
     sys.bCoeff.setSize(nb);
+    if (gradient_.leastSquares())
+    {
+        sys.bLs.setSize(nb);
+    }
     return p;
 }
 
@@ -926,7 +1053,6 @@ Foam::vector Foam::shapeSelfField::solveParts
         const auto iter = row.cfind(g);
         return g < 0 || !iter.found() ? -1 : *iter;
     };
-    List<labelList> shapeRows(1);
     List<DynamicList<scalar>> shapeWeights(1);
     DynamicList<label> rows;
     for (const patchPart& p : parts)
@@ -948,6 +1074,11 @@ Foam::vector Foam::shapeSelfField::solveParts
             sys.Sf.append(ps.Sf[j]);
             sys.corr.append(ps.corr[j]);
             sys.outAt.append(ps.outAt[j]);
+            if (ps.lsOwn.size())
+            {
+                sys.lsOwn.append(ps.lsOwn[j]);
+                sys.lsNei.append(ps.lsNei[j]);
+            }
         }
         forAll(ps.bRow, j)
         {
@@ -955,6 +1086,10 @@ Foam::vector Foam::shapeSelfField::solveParts
             sys.bAt.append(ps.bAt[j]);
             sys.bSf.append(ps.bSf[j]);
             sys.bCoeff.append(ps.bCoeff[j]);
+            if (ps.bLs.size())
+            {
+                sys.bLs.append(ps.bLs[j]);
+            }
         }
         forAll(p.shapeCells, j)
         {
@@ -966,11 +1101,17 @@ Foam::vector Foam::shapeSelfField::solveParts
             }
         }
     }
-    shapeRows[0].transfer(rows);
     return solvePatch
     (
-        sys, List<point>(1, x), shapeRows, shapeWeights,
-        wallPoint, wallNormal, imageSign
+        sys,
+        List<localProblem>
+        (
+            1,
+            pointProblem
+            (
+                x, rows, shapeWeights[0], wallPoint, wallNormal, imageSign
+            )
+        )
     )[0];
 }
 
@@ -984,7 +1125,7 @@ Foam::Ostream& Foam::operator<<
     const shapeSelfField::patchSystem& s = p.sys;
     os  << p.cells << s.V << s.own << s.nei << s.coeff << s.weight
         << s.magSf << s.Sf << s.corr << s.outAt << s.bRow << s.bAt << s.bSf
-        << s.bCoeff << p.shapeCells << p.shapeWeights << p.uniform;
+        << s.bCoeff << s.lsOwn << s.lsNei << s.bLs << p.shapeCells << p.shapeWeights << p.uniform;
     return os;
 }
 
@@ -994,7 +1135,7 @@ Foam::Istream& Foam::operator>>(Istream& is, shapeSelfField::patchPart& p)
     shapeSelfField::patchSystem& s = p.sys;
     is  >> p.cells >> s.V >> s.own >> s.nei >> s.coeff >> s.weight
         >> s.magSf >> s.Sf >> s.corr >> s.outAt >> s.bRow >> s.bAt >> s.bSf
-        >> s.bCoeff >> p.shapeCells >> p.shapeWeights >> p.uniform;
+        >> s.bCoeff >> s.lsOwn >> s.lsNei >> s.bLs >> p.shapeCells >> p.shapeWeights >> p.uniform;
     return is;
 }
 
