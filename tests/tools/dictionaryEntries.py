@@ -70,13 +70,13 @@ METHODS = (
 )
 
 # Receivers that are not dictionaries (argList: command-line options;
-# neighbours: a list of processors)
-NOT_DICTIONARIES = {'args', 'selfFieldSamplingTypeNames', 'neighbours'}
+# choices: an Enum; neighbours: a list of processors)
+NOT_DICTIONARIES = {'args', 'choices', 'neighbours'}
 
 # Project helpers that read the entries named by their literal arguments
 HELPERS = (
     'readPositive', 'readFinite', 'readPoisson', 'readParcelScalar',
-    'readScalar', 'readLabel', 'oneOf',
+    'readScalar', 'readLabel', 'oneOf', 'readChoice',
 )
 
 # Reviewed lookups whose key is not a string literal:

@@ -50,27 +50,26 @@ Foam::meshPoisson::selfFieldSamplingTypeNames
 
 namespace
 {
-    //- The entry key of dict, one of names (default deflt), or a
+    //- The entry key of dict, one of choices (default deflt), or a
     //  FatalIOError naming the entry and the allowed words
     template<class EnumType>
     EnumType readChoice
     (
         const Foam::dictionary& dict,
         const Foam::word& key,
-        const Foam::Enum<EnumType>& names,
-        const EnumType deflt,
-        const char* meaning
+        const Foam::Enum<EnumType>& choices,
+        const EnumType deflt
     )
     {
-        const Foam::word w(dict.lookupOrDefault<Foam::word>(key, names[deflt]));
-        if (!names.found(w))
+        const Foam::word w(dict.lookupOrDefault<Foam::word>(key, choices[deflt]));
+        if (!choices.found(w))
         {
             FatalIOErrorInFunction(dict)
                 << "Entry " << key << " = " << w << " in "
-                << dict.name().c_str() << " must be one of " << names.names()
-                << " (" << meaning << ")" << Foam::exit(Foam::FatalIOError);
+                << dict.name().c_str() << " must be one of " << choices.names()
+                << Foam::exit(Foam::FatalIOError);
         }
-        return names[w];
+        return choices[w];
     }
 
     // Volt = kg m^2 s^-3 A^-1
@@ -198,7 +197,7 @@ Foam::meshPoisson::readSelfFieldSampling() const
     return readChoice
     (
         coeffs_, "selfFieldSampling", selfFieldSamplingTypeNames,
-        selfFieldSamplingType::automatic, "where the self field is found"
+        selfFieldSamplingType::automatic
     );
 }
 
@@ -1601,8 +1600,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         readChoice
         (
             coeffs, "gradient", potentialGradient::schemeTypeNames,
-            potentialGradient::schemeType::leastSquares,
-            "the potential's gradient"
+            potentialGradient::schemeType::leastSquares
         )
     ),
     nEvaluations_(0),
