@@ -1289,8 +1289,9 @@ void Foam::meshPoisson::removeSelfFields
     // on the patch gathered from every processor, unless imaged on any
     // (meshUniform_ is the same on every processor, true in serial)
     const bool gatherPatches = !meshUniform_;
-    // Each charge's sources: itself, its copies and its images
-    const labelListList sourcesOf(invertOneToMany(nReal, origin));
+    // Each charge's sources (itself, its copies and its images), made
+    // when a shape cut by a wall first needs them
+    labelListList sourcesOf;
     DynamicList<label> split;
     DynamicList<scalar> splitVref;
     scalarField imaged;
@@ -1310,6 +1311,10 @@ void Foam::meshPoisson::removeSelfFields
             wLocal[i] + wImaged[i] < (1 - 1e-12)*shapeSum_[i];
         if (wImaged[i] > 0 && !splitHere)
         {
+            if (sourcesOf.empty())
+            {
+                sourcesOf = invertOneToMany(nReal, origin);
+            }
             removeImagedSelfField(i, sourcesOf[i], neighbourhood);
             continue;
         }
@@ -1399,6 +1404,21 @@ void Foam::meshPoisson::removeImagedSelfField
     {
         return;
     }
+    // Its cell: the one of its own shape with the largest weight
+    label celli = -1;
+    scalar wMax = 0;
+    for (label j = shapeStart_[i]; j < shapeStart_[i + 1]; ++j)
+    {
+        if (shapeWeights_[j] > wMax)
+        {
+            wMax = shapeWeights_[j];
+            celli = shapeCells_[j];
+        }
+    }
+    if (celli < 0 || selfField_->uniformAt(celli, neighbourhood))
+    {
+        return;
+    }
     const label nReal = shapeSum_.size();
     shapeSelfField::localProblem lp;
     lp.shaped = true;
@@ -1408,9 +1428,6 @@ void Foam::meshPoisson::removeImagedSelfField
     DynamicList<label> rows;
     DynamicList<scalar> w;
     DynamicList<label> src;
-    label celli = -1;
-    scalar wMax = 0;
-    lp.exact = Zero;
     const pairwiseCoulomb coulomb(epsilonR_);
     for (const label k : sources)
     {
@@ -1436,16 +1453,7 @@ void Foam::meshPoisson::removeImagedSelfField
             rows.append(shapeCells_[j]);
             w.append(shapeWeights_[j]);
             src.append(x.size() - 1);
-            if (k == i && shapeWeights_[j] > wMax)
-            {
-                wMax = shapeWeights_[j];
-                celli = shapeCells_[j];
-            }
         }
-    }
-    if (celli < 0)
-    {
-        return;
     }
     lp.x.transfer(x);
     lp.q.transfer(q);
@@ -1455,7 +1463,7 @@ void Foam::meshPoisson::removeImagedSelfField
     lp.src.transfer(src);
     shapeField_[i] -=
         qs_[i]*sum(lp.w)
-       *selfField_->imagedFieldAtCharge(xs_[i], celli, neighbourhood, lp);
+       *selfField_->imagedFieldAtCharge(xs_[i], neighbourhood, lp);
 }
 
 
