@@ -1332,16 +1332,7 @@ void Foam::meshPoisson::removeSelfFields
             }
             continue;
         }
-        scalar wMax = 0;
-        label celli = -1;
-        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
-        {
-            if (shapeWeights_[k] > wMax)
-            {
-                wMax = shapeWeights_[k];
-                celli = shapeCells_[k];
-            }
-        }
+        const label celli = shapeCell(i);
         if (celli < 0)
         {
             continue;
@@ -1404,17 +1395,7 @@ void Foam::meshPoisson::removeImagedSelfField
     {
         return;
     }
-    // Its cell: the one of its own shape with the largest weight
-    label celli = -1;
-    scalar wMax = 0;
-    for (label j = shapeStart_[i]; j < shapeStart_[i + 1]; ++j)
-    {
-        if (shapeWeights_[j] > wMax)
-        {
-            wMax = shapeWeights_[j];
-            celli = shapeCells_[j];
-        }
-    }
+    const label celli = shapeCell(i);
     if (celli < 0 || selfField_->uniformAt(celli, neighbourhood))
     {
         return;
@@ -1464,6 +1445,22 @@ void Foam::meshPoisson::removeImagedSelfField
     shapeField_[i] -=
         qs_[i]*sum(lp.w)
        *selfField_->imagedFieldAtCharge(xs_[i], neighbourhood, lp);
+}
+
+
+Foam::label Foam::meshPoisson::shapeCell(const label i) const
+{
+    label celli = -1;
+    scalar wMax = 0;
+    for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
+    {
+        if (shapeWeights_[k] > wMax)
+        {
+            wMax = shapeWeights_[k];
+            celli = shapeCells_[k];
+        }
+    }
+    return celli;
 }
 
 
