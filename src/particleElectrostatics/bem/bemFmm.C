@@ -751,19 +751,13 @@ void Foam::bemFmm::upward(const UList<scalar>& q) const
 }
 
 
-void Foam::bemFmm::apply(const tree& T, const interactions& I) const
+void Foam::bemFmm::multipoleToLocal
+(
+    const tree& T,
+    const interactions& I
+) const
 {
     const label nc = nc_;
-    const label nT = T.x.size();
-    L_.assign(T.cells.size()*nc, 0);
-    hasL_.assign(T.cells.size(), 0);
-    ex_.assign(nT, 0);
-    ey_.assign(nT, 0);
-    ez_.assign(nT, 0);
-    ph_.assign(nT, 0);
-    nDirect_ = I.nDirect;
-    nM2L_ = I.nM2L;
-
     // M2L: L_k(t) += sum_n (-1)^|n| M_n(s) D^(n+k)(z_t - z_s), and if
     // mutual L_k(s) += sum_n (-1)^|n| M_n(t) D^(n+k)(z_s - z_t), where
     // D^m(z_s - z_t) = (-1)^|m| D^m(z_t - z_s). Mutual and p <= 8: the
@@ -825,7 +819,15 @@ void Foam::bemFmm::apply(const tree& T, const interactions& I) const
             }
         }
     }
+}
 
+
+void Foam::bemFmm::particleToParticle
+(
+    const tree& T,
+    const interactions& I
+) const
+{
     // P2P
     const tree& S = src_;
     const scalar* q = q_.data();
@@ -873,7 +875,12 @@ void Foam::bemFmm::apply(const tree& T, const interactions& I) const
             ex_.data(), ey_.data(), ez_.data(), ph_.data()
         );
     }
+}
 
+
+void Foam::bemFmm::downward(const tree& T) const
+{
+    const label nc = nc_;
     // Downward: L2L to the children (parents come first), L2P at leaves
     scalar* w = w_.data();
     const label ns = shN_.size();
@@ -926,6 +933,25 @@ void Foam::bemFmm::apply(const tree& T, const interactions& I) const
             }
         }
     }
+}
+
+
+void Foam::bemFmm::apply(const tree& T, const interactions& I) const
+{
+    const label nc = nc_;
+    const label nT = T.x.size();
+    L_.assign(T.cells.size()*nc, 0);
+    hasL_.assign(T.cells.size(), 0);
+    ex_.assign(nT, 0);
+    ey_.assign(nT, 0);
+    ez_.assign(nT, 0);
+    ph_.assign(nT, 0);
+    nDirect_ = I.nDirect;
+    nM2L_ = I.nM2L;
+
+    multipoleToLocal(T, I);
+    particleToParticle(T, I);
+    downward(T);
 }
 
 

@@ -197,6 +197,282 @@ Foam::scalar Foam::bemSolver::distanceBelow
 }
 
 
+void Foam::bemSolver::setPatches()
+{
+    // Every particle's patches in the world frame, their self terms and
+    // near corrections within the body
+    const label np = particles_.size();
+    for (label p = 0; p < np; ++p)
+    {
+        const particle& pt = particles_[p];
+        const shapeData& sd = *shapes_[pt.shape];
+        const ellipsoidSurfaceMesh& m = *sd.mesh;
+        for (label k = 0; k < m.size(); ++k)
+        {
+            const label i = offset_[p] + k;
+            x_[i] = pt.centre + (pt.R & m.centres()[k]);
+            n_[i] = pt.R & m.normals()[k];
+            a_[i] = m.areas()[k];
+            owner_[i] = p;
+            kbar_[i] = 0.5*(pt.kappaP + kappa0_);
+            dk_[i] = kappa0_ - pt.kappaP;
+            selfK_[i] =
+                ctrl_.selfTerm == selfTermModel::curvature
+              ? m.meanCurvatures()[k]*m.selfJ()[k]/(8*pi)
+              : ctrl_.selfTerm == selfTermModel::gauss
+              ? sd.selfGauss[k]
+              : 0;
+            selfP_[i] = m.selfJ()[k]/(4*pi);
+            if (ctrl_.nearQuadrature)
+            {
+                for (const nearEntry& e : sd.nearBody[k])
+                {
+                    nearEntry w = e;
+                    w.j = offset_[p] + e.j;
+                    w.V = pt.R & e.V;
+                    near_[i].push_back(w);
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::bemSolver::findNearPairs()
+{
+    // Near pairs between different particles: a source j of particle s is
+    // near a target i of particle p when |x_i - x_j| < r_j = nearFactor
+    // sqrt(a_j). Per pair of particles within reach, the candidates come
+    // from a lower bound of the distance of a point y to ellipsoid p,
+    // a_min (|S^-1 R^T (y - c)| - 1) (triangle inequality of the norm
+    // |S^-1 .|; patch centres lie on the surface). Graded meshes make a
+    // hash grid on the largest patch size quadratic in the patches.
+    const label np = particles_.size();
+    const label N = offset_[np];
+    if (!(ctrl_.nearQuadrature && np > 1 && ctrl_.nearFactor > 0))
+    {
+        return;
+    }
+    scalarField rMaxOf(np, 0);
+    for (label i = 0; i < N; ++i)
+    {
+        rMaxOf[owner_[i]] =
+            max(rMaxOf[owner_[i]], ctrl_.nearFactor*Foam::sqrt(a_[i]));
+    }
+    // Round-off of the centres' projection onto the surface
+    const scalar slack = 1 + 1e-9;
+    pointField qpw(ellipsoidSurfaceMesh::nQuad);
+    DynamicList<label> sources, targets;
+    for (label s = 0; s < np; ++s)
+    {
+        const particle& ps = particles_[s];
+        const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
+        for (label p = 0; p < np; ++p)
+        {
+            const particle& pp = particles_[p];
+            if
+            (
+                p == s
+             || mag(pp.centre - ps.centre)
+             >= slack*
+                (
+                    cmptMax(mesh(pp.shape).semiAxes())
+                  + cmptMax(ms.semiAxes()) + rMaxOf[s]
+                )
+            )
+            {
+                continue;
+            }
+            sources.clear();
+            scalar rMax = 0;
+            for (label j = offset_[s]; j < offset_[s + 1]; ++j)
+            {
+                const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
+                if (distanceBelow(p, x_[j]) < slack*rj)
+                {
+                    sources.append(j);
+                    rMax = max(rMax, rj);
+                }
+            }
+            if (sources.empty())
+            {
+                continue;
+            }
+            targets.clear();
+            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            {
+                if (distanceBelow(s, x_[i]) < slack*rMax)
+                {
+                    targets.append(i);
+                }
+            }
+            for (const label j : sources)
+            {
+                const label kj = j - offset_[s];
+                const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
+                bool haveQp = false;
+                for (const label i : targets)
+                {
+                    if (magSqr(x_[i] - x_[j]) >= sqr(rj))
+                    {
+                        continue;
+                    }
+                    if (!haveQp)
+                    {
+                        for
+                        (
+                            label q = 0;
+                            q < ellipsoidSurfaceMesh::nQuad;
+                            ++q
+                        )
+                        {
+                            qpw[q] = ps.centre
+                              + (ps.R & ms.quadPoints()
+                                    [ellipsoidSurfaceMesh::nQuad*kj + q]);
+                        }
+                        haveQp = true;
+                    }
+                    nearEntry e;
+                    e.j = j;
+                    scalarField qw
+                    (
+                        SubList<scalar>
+                        (
+                            ms.quadWeights(), ellipsoidSurfaceMesh::nQuad,
+                            ellipsoidSurfaceMesh::nQuad*kj
+                        )
+                    );
+                    nearCorrection
+                    (
+                        x_[i], qpw, qw, 0, x_[j], a_[j], e.V, e.P
+                    );
+                    near_[i].push_back(e);
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::bemSolver::buildFastSum()
+{
+    // Fast sum
+    fastSum_.reset();
+    if (ctrl_.matvec == matvecMethod::treecode)
+    {
+        fastSum_.reset
+        (
+            new bemTreecode
+            (
+                x_, ctrl_.theta, ctrl_.order, ctrl_.leafSize, owner_
+            )
+        );
+    }
+    else if (ctrl_.matvec == matvecMethod::fmm)
+    {
+        fastSum_.reset
+        (
+            new bemFmm
+            (
+                x_, ctrl_.fmmOrder, ctrl_.fmmTheta, ctrl_.fmmLeafSize, owner_
+            )
+        );
+    }
+}
+
+
+std::shared_ptr<Foam::bemSolver::luBlock>
+Foam::bemSolver::factorisedBlock(const label p) const
+{
+    // Particle p's own block of the system (body frame), factorised
+    const particle& pt = particles_[p];
+    const shapeData& sd = *shapes_[pt.shape];
+    const ellipsoidSurfaceMesh& m = *sd.mesh;
+    const label n = m.size();
+    const scalar kb = 0.5*(pt.kappaP + kappa0_);
+    const scalar dkp = kappa0_ - pt.kappaP;
+    Eigen::MatrixXd A(n, n);
+    for (label i = 0; i < n; ++i)
+    {
+        const point& xi = m.centres()[i];
+        const vector& ni = m.normals()[i];
+        for (label j = 0; j < n; ++j)
+        {
+            if (i == j)
+            {
+                A(i, j) = kb + dkp*selfK_[offset_[p] + i];
+                continue;
+            }
+            const vector d = xi - m.centres()[j];
+            const scalar r = mag(d);
+            A(i, j) = dkp*m.areas()[j]*(ni & d)/(4*pi*r*r*r);
+        }
+        if (ctrl_.nearQuadrature)
+        {
+            for (const nearEntry& e : sd.nearBody[i])
+            {
+                A(i, e.j) += dkp*(ni & e.V);
+            }
+        }
+    }
+    if (ctrl_.chargeConservation)
+    {
+        // Same rank-one flux correction as applyK, on
+        // K = (A - kbar I)/dkappa
+        scalar Ap = 0;
+        for (label i = 0; i < n; ++i) Ap += m.areas()[i];
+        for (label j = 0; j < n; ++j)
+        {
+            scalar flux = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                flux += m.areas()[i]
+                  *(A(i, j) - (i == j ? kb : 0));
+            }
+            const scalar c =
+                (flux - dkp*0.5*m.areas()[j])/Ap;
+            for (label i = 0; i < n; ++i)
+            {
+                A(i, j) -= c;
+            }
+        }
+    }
+    auto block = std::make_shared<luBlock>();
+    block->lu.compute(A);
+    return block;
+}
+
+
+void Foam::bemSolver::buildPreconditioner()
+{
+    // Block preconditioner: once per (shape, kappaP, kappa0), body frame
+    const label np = particles_.size();
+    blockLU_.assign(np, nullptr);
+    if (!ctrl_.precondition)
+    {
+        return;
+    }
+    for (label p = 0; p < np; ++p)
+    {
+        const particle& pt = particles_[p];
+        shapeData& sd = *shapes_[pt.shape];
+        if (sd.mesh->size() > ctrl_.maxPreconditionerPatches) continue;
+        const std::pair<scalar, scalar> key(pt.kappaP, kappa0_);
+        std::shared_ptr<luBlock> found;
+        for (const auto& e : sd.lu)
+        {
+            if (e.first == key) found = e.second;
+        }
+        if (!found)
+        {
+            found = factorisedBlock(p);
+            sd.lu.push_back({key, found});
+        }
+        blockLU_[p] = found;
+    }
+}
+
+
 void Foam::bemSolver::assemble()
 {
     const scalar t0 = now();
@@ -242,248 +518,10 @@ void Foam::bemSolver::assemble()
         }
     }
 
-    scalar hmax = 0;
-    for (label p = 0; p < np; ++p)
-    {
-        const particle& pt = particles_[p];
-        const shapeData& sd = *shapes_[pt.shape];
-        const ellipsoidSurfaceMesh& m = *sd.mesh;
-        for (label k = 0; k < m.size(); ++k)
-        {
-            const label i = offset_[p] + k;
-            x_[i] = pt.centre + (pt.R & m.centres()[k]);
-            n_[i] = pt.R & m.normals()[k];
-            a_[i] = m.areas()[k];
-            owner_[i] = p;
-            kbar_[i] = 0.5*(pt.kappaP + kappa0_);
-            dk_[i] = kappa0_ - pt.kappaP;
-            selfK_[i] =
-                ctrl_.selfTerm == selfTermModel::curvature
-              ? m.meanCurvatures()[k]*m.selfJ()[k]/(8*pi)
-              : ctrl_.selfTerm == selfTermModel::gauss
-              ? sd.selfGauss[k]
-              : 0;
-            selfP_[i] = m.selfJ()[k]/(4*pi);
-            hmax = max(hmax, Foam::sqrt(a_[i]));
-            if (ctrl_.nearQuadrature)
-            {
-                for (const nearEntry& e : sd.nearBody[k])
-                {
-                    nearEntry w = e;
-                    w.j = offset_[p] + e.j;
-                    w.V = pt.R & e.V;
-                    near_[i].push_back(w);
-                }
-            }
-        }
-    }
-
-    // Near pairs between different particles: a source j of particle s is
-    // near a target i of particle p when |x_i - x_j| < r_j = nearFactor
-    // sqrt(a_j). Per pair of particles within reach, the candidates come
-    // from a lower bound of the distance of a point y to ellipsoid p,
-    // a_min (|S^-1 R^T (y - c)| - 1) (triangle inequality of the norm
-    // |S^-1 .|; patch centres lie on the surface). Graded meshes make a
-    // hash grid on the largest patch size quadratic in the patches.
-    if (ctrl_.nearQuadrature && np > 1 && ctrl_.nearFactor > 0)
-    {
-        scalarField rMaxOf(np, 0);
-        for (label i = 0; i < N; ++i)
-        {
-            rMaxOf[owner_[i]] =
-                max(rMaxOf[owner_[i]], ctrl_.nearFactor*Foam::sqrt(a_[i]));
-        }
-        // Round-off of the centres' projection onto the surface
-        const scalar slack = 1 + 1e-9;
-        pointField qpw(ellipsoidSurfaceMesh::nQuad);
-        DynamicList<label> sources, targets;
-        for (label s = 0; s < np; ++s)
-        {
-            const particle& ps = particles_[s];
-            const ellipsoidSurfaceMesh& ms = mesh(ps.shape);
-            for (label p = 0; p < np; ++p)
-            {
-                const particle& pp = particles_[p];
-                if
-                (
-                    p == s
-                 || mag(pp.centre - ps.centre)
-                 >= slack*
-                    (
-                        cmptMax(mesh(pp.shape).semiAxes())
-                      + cmptMax(ms.semiAxes()) + rMaxOf[s]
-                    )
-                )
-                {
-                    continue;
-                }
-                sources.clear();
-                scalar rMax = 0;
-                for (label j = offset_[s]; j < offset_[s + 1]; ++j)
-                {
-                    const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
-                    if (distanceBelow(p, x_[j]) < slack*rj)
-                    {
-                        sources.append(j);
-                        rMax = max(rMax, rj);
-                    }
-                }
-                if (sources.empty())
-                {
-                    continue;
-                }
-                targets.clear();
-                for (label i = offset_[p]; i < offset_[p + 1]; ++i)
-                {
-                    if (distanceBelow(s, x_[i]) < slack*rMax)
-                    {
-                        targets.append(i);
-                    }
-                }
-                for (const label j : sources)
-                {
-                    const label kj = j - offset_[s];
-                    const scalar rj = ctrl_.nearFactor*Foam::sqrt(a_[j]);
-                    bool haveQp = false;
-                    for (const label i : targets)
-                    {
-                        if (magSqr(x_[i] - x_[j]) >= sqr(rj))
-                        {
-                            continue;
-                        }
-                        if (!haveQp)
-                        {
-                            for
-                            (
-                                label q = 0;
-                                q < ellipsoidSurfaceMesh::nQuad;
-                                ++q
-                            )
-                            {
-                                qpw[q] = ps.centre
-                                  + (ps.R & ms.quadPoints()
-                                        [ellipsoidSurfaceMesh::nQuad*kj + q]);
-                            }
-                            haveQp = true;
-                        }
-                        nearEntry e;
-                        e.j = j;
-                        scalarField qw
-                        (
-                            SubList<scalar>
-                            (
-                                ms.quadWeights(), ellipsoidSurfaceMesh::nQuad,
-                                ellipsoidSurfaceMesh::nQuad*kj
-                            )
-                        );
-                        nearCorrection
-                        (
-                            x_[i], qpw, qw, 0, x_[j], a_[j], e.V, e.P
-                        );
-                        near_[i].push_back(e);
-                    }
-                }
-            }
-        }
-    }
-
-    // Fast sum
-    fastSum_.reset();
-    if (ctrl_.matvec == matvecMethod::treecode)
-    {
-        fastSum_.reset
-        (
-            new bemTreecode
-            (
-                x_, ctrl_.theta, ctrl_.order, ctrl_.leafSize, owner_
-            )
-        );
-    }
-    else if (ctrl_.matvec == matvecMethod::fmm)
-    {
-        fastSum_.reset
-        (
-            new bemFmm
-            (
-                x_, ctrl_.fmmOrder, ctrl_.fmmTheta, ctrl_.fmmLeafSize, owner_
-            )
-        );
-    }
-
-    // Block preconditioner: once per (shape, kappaP, kappa0), body frame
-    blockLU_.assign(np, nullptr);
-    if (ctrl_.precondition)
-    {
-        for (label p = 0; p < np; ++p)
-        {
-            const particle& pt = particles_[p];
-            shapeData& sd = *shapes_[pt.shape];
-            const ellipsoidSurfaceMesh& m = *sd.mesh;
-            const label n = m.size();
-            if (n > ctrl_.maxPreconditionerPatches) continue;
-            const std::pair<scalar, scalar> key(pt.kappaP, kappa0_);
-            std::shared_ptr<luBlock> found;
-            for (const auto& e : sd.lu)
-            {
-                if (e.first == key) found = e.second;
-            }
-            if (!found)
-            {
-                const scalar kb = 0.5*(pt.kappaP + kappa0_);
-                const scalar dkp = kappa0_ - pt.kappaP;
-                Eigen::MatrixXd A(n, n);
-                for (label i = 0; i < n; ++i)
-                {
-                    const point& xi = m.centres()[i];
-                    const vector& ni = m.normals()[i];
-                    for (label j = 0; j < n; ++j)
-                    {
-                        if (i == j)
-                        {
-                            A(i, j) = kb + dkp*selfK_[offset_[p] + i];
-                            continue;
-                        }
-                        const vector d = xi - m.centres()[j];
-                        const scalar r = mag(d);
-                        A(i, j) = dkp*m.areas()[j]*(ni & d)/(4*pi*r*r*r);
-                    }
-                    if (ctrl_.nearQuadrature)
-                    {
-                        for (const nearEntry& e : sd.nearBody[i])
-                        {
-                            A(i, e.j) += dkp*(ni & e.V);
-                        }
-                    }
-                }
-                if (ctrl_.chargeConservation)
-                {
-                    // Same rank-one flux correction as applyK, on
-                    // K = (A - kbar I)/dkappa
-                    scalar Ap = 0;
-                    for (label i = 0; i < n; ++i) Ap += m.areas()[i];
-                    for (label j = 0; j < n; ++j)
-                    {
-                        scalar flux = 0;
-                        for (label i = 0; i < n; ++i)
-                        {
-                            flux += m.areas()[i]
-                              *(A(i, j) - (i == j ? kb : 0));
-                        }
-                        const scalar c =
-                            (flux - dkp*0.5*m.areas()[j])/Ap;
-                        for (label i = 0; i < n; ++i)
-                        {
-                            A(i, j) -= c;
-                        }
-                    }
-                }
-                found = std::make_shared<luBlock>();
-                found->lu.compute(A);
-                sd.lu.push_back({key, found});
-            }
-            blockLU_[p] = found;
-        }
-    }
+    setPatches();
+    findNearPairs();
+    buildFastSum();
+    buildPreconditioner();
 
     assembled_ = true;
     info_.setupTime = now() - t0;
@@ -730,143 +768,101 @@ void Foam::bemSolver::addFreePotential
 }
 
 
-void Foam::bemSolver::computeOutputs()
+void Foam::bemSolver::directSums
+(
+    const scalarField& sigmaFall,
+    const scalarField& q,
+    const scalarField& qF,
+    vectorField& E,
+    scalarField& phi,
+    vectorField& shift
+) const
 {
     const label N = x_.size();
     const label np = particles_.size();
-    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
     const scalar c4pi = 1/(4*pi);
-
-    scalarField sigmaT(N), sigmaFall(N);
+    // Direct sums by blocks of (target, source) particles, branch-free
+    // inner loops on separate coordinate arrays (vectorised)
+    scalarField w;
+    freeSources(sigmaFall, w, shift);
+    scalarField X(N), Y(N), Z(N), SX(N), SY(N), SZ(N);
+    for (label j = 0; j < N; ++j)
+    {
+        X[j] = x_[j].x();
+        Y[j] = x_[j].y();
+        Z[j] = x_[j].z();
+        SX[j] = w[j]*shift[j].x();
+        SY[j] = w[j]*shift[j].y();
+        SZ[j] = w[j]*shift[j].z();
+    }
     for (label p = 0; p < np; ++p)
     {
-        for (label k = 0; k < offset_[p + 1] - offset_[p]; ++k)
+        // Own patches by the point kernel: a non-uniform free charge
+        bool ownPoint = false;
+        for (label i = offset_[p]; i < offset_[p + 1]; ++i)
         {
-            sigmaFall[offset_[p] + k] = particles_[p].sigmaF[k];
+            ownPoint = ownPoint || sigmaFall[i] != 0;
         }
-    }
-    sigmaT = sigmaFall + sigmaB_;
-    const scalarField q(a_*sigmaT);
-    const scalarField qF(a_*sigmaFall);
-
-    // eps0 E of all other particles' surface charges at each patch, and
-    // eps0 psi_f of the free charges by the point kernel: at the patches'
-    // centres of charge (to first order in their shift from the patch
-    // centres) for uniformly charged ellipsoids; spheres' exact monopoles,
-    // own uniform densities, quadrature near the target and the point
-    // charges are added by addFreePotential
-    vectorField E(N, Zero);
-    scalarField phi(N, Zero);
-    vectorField shift;
-    const bool direct = !(fastSum_ && N > ctrl_.directOutputMax);
-    if (!direct)
-    {
-        // Field of the other particles (exact exclusion), potential of all
-        vectorField Eall;
-        fastSum_->evaluate(qF, x_, true, Eall, &phi);
-        fastSum_->evaluateOthers(q, E, nullptr);
-    }
-    else
-    {
-        // Direct sums by blocks of (target, source) particles, branch-free
-        // inner loops on separate coordinate arrays (vectorised)
-        scalarField w;
-        freeSources(sigmaFall, w, shift);
-        scalarField X(N), Y(N), Z(N), SX(N), SY(N), SZ(N);
-        for (label j = 0; j < N; ++j)
+        ownPoint = ownPoint && !particles_[p].uniformF;
+        for (label i = offset_[p]; i < offset_[p + 1]; ++i)
         {
-            X[j] = x_[j].x();
-            Y[j] = x_[j].y();
-            Z[j] = x_[j].z();
-            SX[j] = w[j]*shift[j].x();
-            SY[j] = w[j]*shift[j].y();
-            SZ[j] = w[j]*shift[j].z();
-        }
-        for (label p = 0; p < np; ++p)
-        {
-            // Own patches by the point kernel: a non-uniform free charge
-            bool ownPoint = false;
-            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+            const scalar xi = X[i], yi = Y[i], zi = Z[i];
+            scalar ex = 0, ey = 0, ez = 0, pot = 0;
+            for (label s = 0; s < np; ++s)
             {
-                ownPoint = ownPoint || sigmaFall[i] != 0;
-            }
-            ownPoint = ownPoint && !particles_[p].uniformF;
-            for (label i = offset_[p]; i < offset_[p + 1]; ++i)
-            {
-                const scalar xi = X[i], yi = Y[i], zi = Z[i];
-                scalar ex = 0, ey = 0, ez = 0, pot = 0;
-                for (label s = 0; s < np; ++s)
+                const label j0 = offset_[s], j1 = offset_[s + 1];
+                if (s != p)
                 {
-                    const label j0 = offset_[s], j1 = offset_[s + 1];
-                    if (s != p)
+                    #pragma omp simd reduction(+:ex, ey, ez, pot)
+                    for (label j = j0; j < j1; ++j)
                     {
-                        #pragma omp simd reduction(+:ex, ey, ez, pot)
-                        for (label j = j0; j < j1; ++j)
-                        {
-                            const scalar dx = xi - X[j];
-                            const scalar dy = yi - Y[j];
-                            const scalar dz = zi - Z[j];
-                            const scalar rInv =
-                                1/std::sqrt(dx*dx + dy*dy + dz*dz);
-                            // (q rInv) rInv rInv: the forces' arithmetic
-                            // of the potential-free sum
-                            const scalar qr3 = q[j]*rInv*rInv*rInv;
-                            pot += w[j]*rInv
-                              + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)
-                               *rInv*rInv*rInv;
-                            ex += qr3*dx;
-                            ey += qr3*dy;
-                            ez += qr3*dz;
-                        }
-                    }
-                    else if (ownPoint)
-                    {
-                        // Own patches: potential only, without i itself
-                        #pragma omp simd reduction(+:pot)
-                        for (label j = j0; j < j1; ++j)
-                        {
-                            const scalar dx = xi - X[j];
-                            const scalar dy = yi - Y[j];
-                            const scalar dz = zi - Z[j];
-                            const scalar r2 = dx*dx + dy*dy + dz*dz;
-                            pot += (j == i ? 0 : qF[j]/std::sqrt(r2 + (j == i)));
-                        }
+                        const scalar dx = xi - X[j];
+                        const scalar dy = yi - Y[j];
+                        const scalar dz = zi - Z[j];
+                        const scalar rInv =
+                            1/std::sqrt(dx*dx + dy*dy + dz*dz);
+                        // (q rInv) rInv rInv: the forces' arithmetic
+                        // of the potential-free sum
+                        const scalar qr3 = q[j]*rInv*rInv*rInv;
+                        pot += w[j]*rInv
+                          + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)
+                           *rInv*rInv*rInv;
+                        ex += qr3*dx;
+                        ey += qr3*dy;
+                        ez += qr3*dz;
                     }
                 }
-                E[i] = c4pi*vector(ex, ey, ez);
-                phi[i] = c4pi*pot;
+                else if (ownPoint)
+                {
+                    // Own patches: potential only, without i itself
+                    #pragma omp simd reduction(+:pot)
+                    for (label j = j0; j < j1; ++j)
+                    {
+                        const scalar dx = xi - X[j];
+                        const scalar dy = yi - Y[j];
+                        const scalar dz = zi - Z[j];
+                        const scalar r2 = dx*dx + dy*dy + dz*dz;
+                        pot += (j == i ? 0 : qF[j]/std::sqrt(r2 + (j == i)));
+                    }
+                }
             }
+            E[i] = c4pi*vector(ex, ey, ez);
+            phi[i] = c4pi*pot;
         }
     }
-    for (label i = 0; i < N; ++i)
-    {
-        for (const nearEntry& e : near_[i])
-        {
-            if (owner_[e.j] != owner_[i])
-            {
-                E[i] += sigmaT[e.j]*e.V;
-            }
-        }
-        forAll(pcX_, k)
-        {
-            const vector d = x_[i] - pcX_[k];
-            const scalar r = mag(d);
-            E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
-        }
-    }
-    if (direct)
-    {
-        for (const particle& pt : particles_)
-        {
-            shapeData& sd = *shapes_[pt.shape];
-            if (pt.uniformF && sd.unitPotential.empty())
-            {
-                sd.unitPotential = sd.mesh->unitPotential();
-            }
-        }
-    }
-    addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
+}
 
+
+void Foam::bemSolver::forcesAndEnergy
+(
+    const scalarField& q,
+    const vectorField& E,
+    const scalarField& phi
+)
+{
+    // Forces and torques (Eq. 11) and the energy (Eq. 51, reciprocal)
+    const label np = particles_.size();
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
     force_.setSize(np);
     torque_.setSize(np);
     energy_ = 0;
@@ -888,7 +884,19 @@ void Foam::bemSolver::computeOutputs()
         force_[p] = F;
         torque_[p] = M;
     }
+}
 
+
+void Foam::bemSolver::addPointChargeEnergy
+(
+    const scalarField& sigmaFall,
+    const scalarField& qF,
+    scalar& energy
+) const
+{
+    const label N = x_.size();
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    const scalar c4pi = 1/(4*pi);
     // Free point charges: 1/2 q psi_f(x_k), near patches by quadrature
     forAll(pcX_, k)
     {
@@ -924,8 +932,83 @@ void Foam::bemSolver::computeOutputs()
                 psi += pcQ_[l]/kappa0_/mag(pcX_[k] - pcX_[l]);
             }
         }
-        energy_ += 0.5*pcQ_[k]*c4pi*psi/eps0;
+        energy += 0.5*pcQ_[k]*c4pi*psi/eps0;
     }
+}
+
+
+void Foam::bemSolver::computeOutputs()
+{
+    const label N = x_.size();
+    const label np = particles_.size();
+    const scalar c4pi = 1/(4*pi);
+
+    scalarField sigmaT(N), sigmaFall(N);
+    for (label p = 0; p < np; ++p)
+    {
+        for (label k = 0; k < offset_[p + 1] - offset_[p]; ++k)
+        {
+            sigmaFall[offset_[p] + k] = particles_[p].sigmaF[k];
+        }
+    }
+    sigmaT = sigmaFall + sigmaB_;
+    const scalarField q(a_*sigmaT);
+    const scalarField qF(a_*sigmaFall);
+
+    // eps0 E of all other particles' surface charges at each patch, and
+    // eps0 psi_f of the free charges by the point kernel: at the patches'
+    // centres of charge (to first order in their shift from the patch
+    // centres) for uniformly charged ellipsoids; spheres' exact monopoles,
+    // own uniform densities, quadrature near the target and the point
+    // charges are added by addFreePotential
+    vectorField E(N, Zero);
+    scalarField phi(N, Zero);
+    vectorField shift;
+    const bool direct = !(fastSum_ && N > ctrl_.directOutputMax);
+    if (!direct)
+    {
+        // Field of the other particles (exact exclusion), potential of all
+        vectorField Eall;
+        fastSum_->evaluate(qF, x_, true, Eall, &phi);
+        fastSum_->evaluateOthers(q, E, nullptr);
+    }
+    else
+    {
+        directSums(sigmaFall, q, qF, E, phi, shift);
+    }
+    for (label i = 0; i < N; ++i)
+    {
+        for (const nearEntry& e : near_[i])
+        {
+            if (owner_[e.j] != owner_[i])
+            {
+                E[i] += sigmaT[e.j]*e.V;
+            }
+        }
+        forAll(pcX_, k)
+        {
+            const vector d = x_[i] - pcX_[k];
+            const scalar r = mag(d);
+            E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
+        }
+    }
+    if (direct)
+    {
+        for (const particle& pt : particles_)
+        {
+            shapeData& sd = *shapes_[pt.shape];
+            if (pt.uniformF && sd.unitPotential.empty())
+            {
+                sd.unitPotential = sd.mesh->unitPotential();
+            }
+        }
+    }
+    addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
+
+    forcesAndEnergy(q, E, phi);
+
+    // Free point charges: 1/2 q psi_f(x_k), near patches by quadrature
+    addPointChargeEnergy(sigmaFall, qF, energy_);
 }
 
 
@@ -1185,17 +1268,13 @@ void Foam::bemSolver::setInitialGuess(const label i, const scalarField& sigmaB)
 }
 
 
-const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
+Foam::tmp<Foam::scalarField> Foam::bemSolver::rightHandSide() const
 {
-    if (!assembled_)
-    {
-        assemble();
-    }
+    // Right-hand side of Eq. 8
     const label N = x_.size();
     const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
     const scalar c4pi = 1/(4*pi);
 
-    // Right-hand side of Eq. 8
     scalarField sigmaF(N);
     for (label p = 0; p < label(particles_.size()); ++p)
     {
@@ -1206,7 +1285,9 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
     }
     scalarField Kf;
     applyK(sigmaF, Kf);
-    scalarField b(N), Eext(N);
+    tmp<scalarField> tb(new scalarField(N));
+    scalarField& b = tb.ref();
+    scalarField Eext(N);
     for (label i = 0; i < N; ++i)
     {
         scalar En = eps0*(n_[i] & particleE_[owner_[i]]);
@@ -1272,7 +1353,13 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
     {
         b[i] = (1 - kbar_[i])*sigmaF[i] - dk_[i]*(Kf[i] + Eext[i]);
     }
+    return tb;
+}
 
+
+void Foam::bemSolver::gmres(const scalarField& b)
+{
+    const label N = x_.size();
     // Restarted GMRES, right preconditioning (Ruan, Eqs. 13-14)
     const scalar t0 = now();
     scalar tMv = 0;
@@ -1364,6 +1451,16 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
     }
     info_.solveTime = now() - t0;
     info_.matvecTime = tMv;
+}
+
+
+const Foam::bemSolver::solveInfo& Foam::bemSolver::solve()
+{
+    if (!assembled_)
+    {
+        assemble();
+    }
+    gmres(rightHandSide());
     if (!info_.converged)
     {
         WarningInFunction

@@ -215,6 +215,93 @@ Foam::scalar curvedInverseDistance
     return J + curvedInverseDistance(S, x, xb, cx, depth - 1);
 }
 
+// A face of the incremental convex hull: vertices (outward
+// counter-clockwise), unit normal, offset n.x and whether still on the hull
+struct hullFace
+{
+    Foam::label v[3];
+    Foam::vector nrm;
+    Foam::scalar off;
+    bool alive;
+};
+
+
+hullFace makeHullFace
+(
+    const Foam::UList<Foam::point>& pts,
+    const Foam::label a,
+    const Foam::label b,
+    const Foam::label c
+)
+{
+    hullFace f;
+    f.v[0] = a; f.v[1] = b; f.v[2] = c;
+    Foam::vector nn = (pts[b] - pts[a]) ^ (pts[c] - pts[a]);
+    f.nrm = nn/Foam::max(Foam::mag(nn), Foam::VSMALL);
+    f.off = f.nrm & pts[a];
+    f.alive = true;
+    return f;
+}
+
+
+// The hull's initial tetrahedron from extreme points (its four vertices
+// in i), its faces oriented outwards into F
+void initialTetrahedron
+(
+    const Foam::UList<Foam::point>& pts,
+    const Foam::scalar eps,
+    std::vector<hullFace>& F,
+    Foam::label i[4]
+)
+{
+    using namespace Foam;
+    const label n = pts.size();
+    label i0 = 0, i1 = 0;
+    for (label k = 1; k < n; ++k)
+    {
+        if (pts[k].x() < pts[i0].x()) i0 = k;
+        if (pts[k].x() > pts[i1].x()) i1 = k;
+    }
+    const vector e01 = (pts[i1] - pts[i0])/mag(pts[i1] - pts[i0]);
+    label i2 = -1;
+    scalar best = -1;
+    for (label k = 0; k < n; ++k)
+    {
+        const vector d = pts[k] - pts[i0];
+        const scalar dl = mag(d - (d & e01)*e01);
+        if (dl > best) { best = dl; i2 = k; }
+    }
+    vector n012 = (pts[i1] - pts[i0]) ^ (pts[i2] - pts[i0]);
+    n012 /= mag(n012);
+    label i3 = -1;
+    best = -1;
+    for (label k = 0; k < n; ++k)
+    {
+        const scalar dl = mag((pts[k] - pts[i0]) & n012);
+        if (dl > best) { best = dl; i3 = k; }
+    }
+    if (best < eps)
+    {
+        FatalErrorInFunction << "Points are coplanar" << exit(FatalError);
+    }
+    const point cen = 0.25*(pts[i0] + pts[i1] + pts[i2] + pts[i3]);
+    const label tet[4][3] = {{i0, i1, i2}, {i0, i1, i3}, {i0, i2, i3}, {i1, i2, i3}};
+    for (label k = 0; k < 4; ++k)
+    {
+        hullFace f = makeHullFace(pts, tet[k][0], tet[k][1], tet[k][2]);
+        if (((f.nrm & cen) - f.off) > 0)
+        {
+            f = makeHullFace(pts, tet[k][0], tet[k][2], tet[k][1]);
+        }
+        F.push_back(f);
+    }
+    i[0] = i0;
+    i[1] = i1;
+    i[2] = i2;
+    i[3] = i3;
+}
+
+
 } // End anonymous namespace
 
 
@@ -268,14 +355,7 @@ Foam::ellipsoidSurfaceMesh::convexHull(const UList<point>& pts)
             << "Need at least 4 points, got " << n << exit(FatalError);
     }
 
-    struct face
-    {
-        label v[3];
-        vector nrm;
-        scalar off;
-        bool alive;
-    };
-    std::vector<face> F;
+    std::vector<hullFace> F;
     F.reserve(4*n);
 
     scalar scale = 0;
@@ -284,58 +364,14 @@ Foam::ellipsoidSurfaceMesh::convexHull(const UList<point>& pts)
         scale = max(scale, mag(p));
     }
     const scalar eps = 1e-13*scale;
-
     auto makeFace = [&](label a, label b, label c)
     {
-        face f;
-        f.v[0] = a; f.v[1] = b; f.v[2] = c;
-        vector nn = (pts[b] - pts[a]) ^ (pts[c] - pts[a]);
-        f.nrm = nn/max(mag(nn), VSMALL);
-        f.off = f.nrm & pts[a];
-        f.alive = true;
-        return f;
+        return makeHullFace(pts, a, b, c);
     };
 
-    // Initial tetrahedron from extreme points
-    label i0 = 0, i1 = 0;
-    for (label i = 1; i < n; ++i)
-    {
-        if (pts[i].x() < pts[i0].x()) i0 = i;
-        if (pts[i].x() > pts[i1].x()) i1 = i;
-    }
-    const vector e01 = (pts[i1] - pts[i0])/mag(pts[i1] - pts[i0]);
-    label i2 = -1;
-    scalar best = -1;
-    for (label i = 0; i < n; ++i)
-    {
-        const vector d = pts[i] - pts[i0];
-        const scalar dl = mag(d - (d & e01)*e01);
-        if (dl > best) { best = dl; i2 = i; }
-    }
-    vector n012 = (pts[i1] - pts[i0]) ^ (pts[i2] - pts[i0]);
-    n012 /= mag(n012);
-    label i3 = -1;
-    best = -1;
-    for (label i = 0; i < n; ++i)
-    {
-        const scalar dl = mag((pts[i] - pts[i0]) & n012);
-        if (dl > best) { best = dl; i3 = i; }
-    }
-    if (best < eps)
-    {
-        FatalErrorInFunction << "Points are coplanar" << exit(FatalError);
-    }
-    const point cen = 0.25*(pts[i0] + pts[i1] + pts[i2] + pts[i3]);
-    const label tet[4][3] = {{i0, i1, i2}, {i0, i1, i3}, {i0, i2, i3}, {i1, i2, i3}};
-    for (label k = 0; k < 4; ++k)
-    {
-        face f = makeFace(tet[k][0], tet[k][1], tet[k][2]);
-        if (((f.nrm & cen) - f.off) > 0)
-        {
-            f = makeFace(tet[k][0], tet[k][2], tet[k][1]);
-        }
-        F.push_back(f);
-    }
+    label tet[4];
+    initialTetrahedron(pts, eps, F, tet);
+    const label i0 = tet[0], i1 = tet[1], i2 = tet[2], i3 = tet[3];
 
     // Deterministic shuffled insertion order (expected cost independent of
     // the generation order of the points)
@@ -394,9 +430,9 @@ Foam::ellipsoidSurfaceMesh::convexHull(const UList<point>& pts)
         }
         if (label(F.size()) > 3*nAlive + 64)
         {
-            std::vector<face> G;
+            std::vector<hullFace> G;
             G.reserve(4*n);
-            for (const face& f : F) if (f.alive) G.push_back(f);
+            for (const hullFace& f : F) if (f.alive) G.push_back(f);
             F.swap(G);
         }
     }
@@ -411,7 +447,7 @@ Foam::ellipsoidSurfaceMesh::convexHull(const UList<point>& pts)
 
     List<triFace3> faces(nAlive);
     label m = 0;
-    for (const face& f : F)
+    for (const hullFace& f : F)
     {
         if (f.alive)
         {

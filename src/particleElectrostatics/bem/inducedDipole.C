@@ -86,6 +86,64 @@ Foam::tensor Foam::inducedDipole::polarisability
 
 // * * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * //
 
+void Foam::inducedDipole::setSources()
+{
+    const label n = x_.size();
+    // Sources: the particles and, in a periodic box, their images
+    // within rNear of the particles' bounding box (rNear < L/2: each
+    // pair is then met once from each side)
+    DynamicList<point>& xS = xS_;
+    DynamicList<label>& ofSource = ofSource_;
+    xS = x_;
+    ofSource = identity(n);
+    if (cmptMax(period_) > 0 && n)
+    {
+        point lo(x_[0]), hi(x_[0]);
+        for (const point& x : x_)
+        {
+            lo = min(lo, x);
+            hi = max(hi, x);
+        }
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (period_[d] > 0 && !(2*rNear_ < period_[d]))
+            {
+                FatalErrorInFunction
+                    << "Near-field radius " << rNear_ << " must be below"
+                    << " half the periodic box edge " << period_[d]
+                    << exit(FatalError);
+            }
+        }
+        for (label sx = -1; sx <= 1; ++sx)
+        for (label sy = -1; sy <= 1; ++sy)
+        for (label sz = -1; sz <= 1; ++sz)
+        {
+            const vector s
+            (
+                sx*period_.x(), sy*period_.y(), sz*period_.z()
+            );
+            if (s == vector::zero)
+            {
+                continue;
+            }
+            for (label j = 0; j < n; ++j)
+            {
+                const point xj = x_[j] + s;
+                if
+                (
+                    cmptMin(xj - lo + vector::uniform(rNear_)) > 0
+                 && cmptMin(hi - xj + vector::uniform(rNear_)) > 0
+                )
+                {
+                    xS.append(xj);
+                    ofSource.append(j);
+                }
+            }
+        }
+    }
+}
+
+
 void Foam::inducedDipole::findPairs()
 {
     const label n = x_.size();
@@ -93,11 +151,8 @@ void Foam::inducedDipole::findPairs()
 
     // Without the charges' fields a pair of two unpolarisable particles
     // has no term
-    boolList polar(n);
-    forAll(polar, i)
-    {
-        polar[i] = cmptMax(cmptMag(alpha_[i])) > 0;
-    }
+    markPolarisable();
+    const DynamicList<bool>& polar = polar_;
     auto hasTerms = [&](const label i, const label j)
     {
         return chargeFields_ || polar[i] || polar[j];
@@ -142,62 +197,12 @@ void Foam::inducedDipole::findPairs()
     }
     else
     {
-        // Sources: the particles and, in a periodic box, their images
-        // within rNear of the particles' bounding box (rNear < L/2: each
-        // pair is then met once from each side)
-        DynamicList<point>& xS = xS_;
-        DynamicList<label>& ofSource = ofSource_;
-        xS = x_;
-        ofSource = identity(n);
-        if (cmptMax(period_) > 0 && n)
-        {
-            point lo(x_[0]), hi(x_[0]);
-            for (const point& x : x_)
-            {
-                lo = min(lo, x);
-                hi = max(hi, x);
-            }
-            for (direction d = 0; d < 3; ++d)
-            {
-                if (period_[d] > 0 && !(2*rNear_ < period_[d]))
-                {
-                    FatalErrorInFunction
-                        << "Near-field radius " << rNear_ << " must be below"
-                        << " half the periodic box edge " << period_[d]
-                        << exit(FatalError);
-                }
-            }
-            for (label sx = -1; sx <= 1; ++sx)
-            for (label sy = -1; sy <= 1; ++sy)
-            for (label sz = -1; sz <= 1; ++sz)
-            {
-                const vector s
-                (
-                    sx*period_.x(), sy*period_.y(), sz*period_.z()
-                );
-                if (s == vector::zero)
-                {
-                    continue;
-                }
-                for (label j = 0; j < n; ++j)
-                {
-                    const point xj = x_[j] + s;
-                    if
-                    (
-                        cmptMin(xj - lo + vector::uniform(rNear_)) > 0
-                     && cmptMin(hi - xj + vector::uniform(rNear_)) > 0
-                    )
-                    {
-                        xS.append(xj);
-                        ofSource.append(j);
-                    }
-                }
-            }
-        }
-
+        // Sources: the particles and their periodic images
+        setSources();
+        const DynamicList<label>& ofSource = ofSource_;
         forPairsWithinCutoff
         (
-            x_, xS, rNear_, 0,
+            x_, xS_, rNear_, 0,
             [&](const label t, const label s, const vector& r, const scalar)
             {
                 const label j = ofSource[s];
@@ -222,31 +227,36 @@ void Foam::inducedDipole::findPairs()
 }
 
 
-void Foam::inducedDipole::solveDipoles()
+void Foam::inducedDipole::markPolarisable()
 {
-    const List<vector>& Ec = Ec_;
-    // Hand-written preconditioned CG rather than an Eigen sparse solver:
-    // the operator is applied from the pair list with 3x3 blocks and no
-    // assembly (the pairs change every step), and the block-diagonal
-    // preconditioner alpha is exact for isolated particles
+    polar_.resize(alpha_.size());
+    forAll(alpha_, i)
+    {
+        polar_[i] = cmptMax(cmptMag(alpha_[i])) > 0;
+    }
+}
+
+
+void Foam::inducedDipole::setUpOperator()
+{
+    // Polarisable particles, the preconditioner's inverses and the dipole
+    // tensors T = k (3 r r/r^2 - I)/r^3 of the pairs of two polarisable
+    // particles
     const label n = x_.size();
     const scalar k = 1/(4*pi*pairwiseCoulomb::vacuumPermittivity*kappa0_);
-
-    boolList polar(n);
+    markPolarisable();
+    const DynamicList<bool>& polar = polar_;
     DynamicList<tensor>& alphaInv = alphaInv_;
     alphaInv.resize(n);
     alphaInv = Zero;
     forAll(alpha_, i)
     {
-        polar[i] = cmptMax(cmptMag(alpha_[i])) > 0;
         if (polar[i])
         {
             alphaInv[i] = inv(alpha_[i]);
         }
     }
 
-    // Dipole tensors T = k (3 r r/r^2 - I)/r^3 of the pairs of two
-    // polarisable particles
     DynamicList<label>& tPairs = tPairs_;
     DynamicList<symmTensor>& T = T_;
     tPairs.clear();
@@ -262,43 +272,69 @@ void Foam::inducedDipole::solveDipoles()
             T.append(k*ir3*(3*sqr(ij.r)/r2 - symmTensor::I));
         }
     }
+}
 
+
+void Foam::inducedDipole::applyOperator
+(
+    List<vector>& v,
+    List<vector>& Av
+) const
+{
+    // (alpha^-1 - T) v, the copies' entries of v from their owners first
+    if (owned_.size() == v.size())
+    {
+        updateCopies_(v);
+    }
+    forAll(v, i)
+    {
+        Av[i] = polar_[i] ? (alphaInv_[i] & v[i]) : vector::zero;
+    }
+    forAll(tPairs_, t)
+    {
+        const pair& ij = pairs_[tPairs_[t]];
+        Av[ij.i] -= T_[t] & v[ij.j];
+        Av[ij.j] -= T_[t] & v[ij.i];
+    }
+}
+
+
+Foam::scalar Foam::inducedDipole::dot
+(
+    const UList<vector>& a,
+    const UList<vector>& b
+) const
+{
+    // Over the owned particles, summed over the processors if distributed
+    const bool distributed = owned_.size() == a.size();
+    scalar s = 0;
+    forAll(a, i)
+    {
+        if (!distributed || owned_[i])
+        {
+            s += a[i] & b[i];
+        }
+    }
+    return distributed ? sumOverProcessors_(s) : s;
+}
+
+
+void Foam::inducedDipole::solveDipoles()
+{
+    const List<vector>& Ec = Ec_;
+    // Hand-written preconditioned CG rather than an Eigen sparse solver:
+    // the operator is applied from the pair list with 3x3 blocks and no
+    // assembly (the pairs change every step), and the block-diagonal
+    // preconditioner alpha is exact for isolated particles
+    const label n = x_.size();
+    setUpOperator();
     const bool distributed = owned_.size() == n;
-    auto apply = [&](List<vector>& v, List<vector>& Av)
-    {
-        if (distributed)
-        {
-            updateCopies_(v);
-        }
-        forAll(v, i)
-        {
-            Av[i] = polar[i] ? (alphaInv[i] & v[i]) : vector::zero;
-        }
-        forAll(tPairs, t)
-        {
-            const pair& ij = pairs_[tPairs[t]];
-            Av[ij.i] -= T[t] & v[ij.j];
-            Av[ij.j] -= T[t] & v[ij.i];
-        }
-    };
-    auto dot = [&](const List<vector>& a, const List<vector>& b)
-    {
-        scalar s = 0;
-        forAll(a, i)
-        {
-            if (!distributed || owned_[i])
-            {
-                s += a[i] & b[i];
-            }
-        }
-        return distributed ? sumOverProcessors_(s) : s;
-    };
 
     DynamicList<vector>& b = b_;
     b.resize(n);
     forAll(b, i)
     {
-        b[i] = polar[i] ? Ec[i] : vector::zero;
+        b[i] = polar_[i] ? Ec[i] : vector::zero;
     }
 
     // Start: the last dipoles, or each particle's own response alpha Ec
@@ -307,7 +343,7 @@ void Foam::inducedDipole::solveDipoles()
     {
         forAll(p_, i)
         {
-            p_[i] = polar[i] ? pGuess_[i] : vector::zero;
+            p_[i] = polar_[i] ? pGuess_[i] : vector::zero;
         }
     }
     else
@@ -326,7 +362,7 @@ void Foam::inducedDipole::solveDipoles()
     z.resize(n);
     d.resize(n);
     Ad.resize(n);
-    apply(p_, Ad);
+    applyOperator(p_, Ad);
     forAll(r, i)
     {
         r[i] = b[i] - Ad[i];
@@ -349,7 +385,7 @@ void Foam::inducedDipole::solveDipoles()
 
     while (residual_ > tolerance_ && iterations_ < maxIter_)
     {
-        apply(d, Ad);
+        applyOperator(d, Ad);
         const scalar dAd = dot(d, Ad);
         if (!(dAd > 0))
         {

@@ -815,6 +815,119 @@ void Foam::meshPoisson::wallTangentPlane
 }
 
 
+void Foam::meshPoisson::appendImages
+(
+    const label i,
+    const point& xi,
+    const scalar qi,
+    const label oi,
+    const UList<vector>& pn,
+    const UList<scalar>& pd,
+    const UList<scalar>& ps,
+    const labelUList& order,
+    const label np,
+    DynamicList<point>& gx,
+    DynamicList<scalar>& gq,
+    DynamicList<label>& go
+)
+{
+    // Subsets of the planes: single reflections always; compositions
+    // only of mutually perpendicular planes (exact there)
+    for (label mask = 1; mask < (1 << np); ++mask)
+    {
+        // y = T x + b from the reflections y -> (I - 2 n n) y + 2 (p.n) n
+        tensor T(tensor::I);
+        vector b(Zero);
+        scalar sgn = 1;
+        bool ok = true;
+        for (label a = 0; a < np && ok; ++a)
+        {
+            if (!(mask & (1 << a)))
+            {
+                continue;
+            }
+            for (label b = a + 1; b < np; ++b)
+            {
+                if
+                (
+                    (mask & (1 << b))
+                 && mag(pn[order[a]] & pn[order[b]]) > 1e-6
+                )
+                {
+                    ok = false;
+                }
+            }
+            const label k = order[a];
+            // The plane through p = x + d n
+            const point p(xi + pd[k]*pn[k]);
+            const tensor H(tensor::I - 2*sqr(pn[k]));
+            T = H & T;
+            b = (H & b) + 2*(p & pn[k])*pn[k];
+            sgn *= ps[k];
+        }
+        if (ok)
+        {
+            gx.append((T & xi) + b);
+            gq.append(sgn*qi);
+            go.append(oi);
+            addTransform(i, T, b, sgn);
+        }
+    }
+}
+
+
+void Foam::meshPoisson::distinctWallPlanes
+(
+    const point& xi,
+    const labelUList& faces,
+    DynamicList<vector>& pn,
+    DynamicList<scalar>& pd,
+    DynamicList<scalar>& ps,
+    DynamicList<label>& pf
+) const
+{
+    const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
+    // Distinct planes (normal, distance, sign), nearest first, <= 3.
+    // Faces whose normals are within 45 degrees are one wall, imaged
+    // in its tangent plane at the foot of the charge on its nearest
+    // face (the surface fitted there): the faces of a smooth wall near
+    // a charge differ by the mesh's angular spacing, and one image per
+    // face would count the wall several times; walls meeting at a
+    // corner stay distinct
+    pn.clear();
+    pd.clear();
+    ps.clear();
+    pf.clear();
+    for (const label f : faces)
+    {
+        const scalar d = (wallC_[f] - xi) & wallN_[f];
+        bool known = false;
+        forAll(pn, k)
+        {
+            if ((pn[k] & wallN_[f]) > oneWallCos)
+            {
+                if (d < pd[k])
+                {
+                    pn[k] = wallN_[f];
+                    pd[k] = d;
+                    ps[k] = wallSign_[f];
+                    pf[k] = f;
+                }
+                known = true;
+                break;
+            }
+        }
+        if (!known)
+        {
+            pn.append(wallN_[f]);
+            pd.append(d);
+            ps.append(wallSign_[f]);
+            pf.append(f);
+        }
+    }
+}
+
+
 void Foam::meshPoisson::addWallImages
 (
     pointField& x,
@@ -885,52 +998,19 @@ void Foam::meshPoisson::addWallImages
     DynamicList<vector> pn;
     DynamicList<scalar> pd, ps;
     DynamicList<label> pf;
-    const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
     for (label i = 0; i < n0; ++i)
     {
         if (start[i + 1] == start[i])
         {
             continue;
         }
-        // Distinct planes (normal, distance, sign), nearest first, <= 3.
-        // Faces whose normals are within 45 degrees are one wall, imaged
-        // in its tangent plane at the foot of the charge on its nearest
-        // face (the surface fitted there): the faces of a smooth wall near
-        // a charge differ by the mesh's angular spacing, and one image per
-        // face would count the wall several times; walls meeting at a
-        // corner stay distinct
-        pn.clear();
-        pd.clear();
-        ps.clear();
-        pf.clear();
+        // Distinct planes (normal, distance, sign) of the faces in range
+        DynamicList<label> faces(start[i + 1] - start[i]);
         for (label j = start[i]; j < start[i + 1]; ++j)
         {
-            const label f = pairs[j].second();
-            const scalar d = (wallC_[f] - x[i]) & wallN_[f];
-            bool known = false;
-            forAll(pn, k)
-            {
-                if ((pn[k] & wallN_[f]) > oneWallCos)
-                {
-                    if (d < pd[k])
-                    {
-                        pn[k] = wallN_[f];
-                        pd[k] = d;
-                        ps[k] = wallSign_[f];
-                        pf[k] = f;
-                    }
-                    known = true;
-                    break;
-                }
-            }
-            if (!known)
-            {
-                pn.append(wallN_[f]);
-                pd.append(d);
-                ps.append(wallSign_[f]);
-                pf.append(f);
-            }
+            faces.append(pairs[j].second());
         }
+        distinctWallPlanes(x[i], faces, pn, pd, ps, pf);
         if (pn.empty())
         {
             continue;
@@ -948,48 +1028,10 @@ void Foam::meshPoisson::addWallImages
         sortedOrder(pd, order);
         const label np = min(order.size(), label(3));
 
-        // Subsets of the planes: single reflections always; compositions
-        // only of mutually perpendicular planes (exact there)
-        for (label mask = 1; mask < (1 << np); ++mask)
-        {
-            // y = T x + b from the reflections y -> (I - 2 n n) y + 2 (p.n) n
-            tensor T(tensor::I);
-            vector b(Zero);
-            scalar sgn = 1;
-            bool ok = true;
-            for (label a = 0; a < np && ok; ++a)
-            {
-                if (!(mask & (1 << a)))
-                {
-                    continue;
-                }
-                for (label b = a + 1; b < np; ++b)
-                {
-                    if
-                    (
-                        (mask & (1 << b))
-                     && mag(pn[order[a]] & pn[order[b]]) > 1e-6
-                    )
-                    {
-                        ok = false;
-                    }
-                }
-                const label k = order[a];
-                // The plane through p = x + d n
-                const point p(x[i] + pd[k]*pn[k]);
-                const tensor H(tensor::I - 2*sqr(pn[k]));
-                T = H & T;
-                b = (H & b) + 2*(p & pn[k])*pn[k];
-                sgn *= ps[k];
-            }
-            if (ok)
-            {
-                gx.append((T & x[i]) + b);
-                gq.append(sgn*q[i]);
-                go.append(origin[i]);
-                addTransform(i, T, b, sgn);
-            }
-        }
+        appendImages
+        (
+            i, x[i], q[i], origin[i], pn, pd, ps, order, np, gx, gq, go
+        );
     }
     x.transfer(gx);
     q.transfer(gq);
@@ -1120,6 +1162,191 @@ void Foam::meshPoisson::averageOverShapes
 }
 
 
+void Foam::meshPoisson::unfoldedCellsNear
+(
+    const point& y,
+    const scalar r,
+    const UList<vector>& translations,
+    DynamicList<label>& cells,
+    DynamicList<vector>& shifts
+) const
+{
+    DynamicList<scalar> dist;
+    cellsNear(y, r, cells, dist);
+    shifts.setSize(cells.size());
+    shifts = Zero;
+    if (translations.empty())
+    {
+        return;
+    }
+    // A cell within reach twice (a period shorter than the patch's
+    // diameter) is taken once, where it is nearest to y (the cyclic
+    // faces between its two sides then hold fixed values)
+    Map<label> at(2*cells.size());
+    forAll(cells, j)
+    {
+        at.insert(cells[j], j);
+    }
+    DynamicList<scalar> moreDist;
+    DynamicList<label> more;
+    for (const vector& t : translations)
+    {
+        if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(r))
+        {
+            cellsNear(y + t, r, more, moreDist);
+            forAll(more, k)
+            {
+                const auto iter = at.cfind(more[k]);
+                if (!iter.found())
+                {
+                    at.insert(more[k], cells.size());
+                    cells.append(more[k]);
+                    shifts.append(-t);
+                    dist.append(moreDist[k]);
+                }
+                else if (moreDist[k] < dist[*iter])
+                {
+                    shifts[*iter] = -t;
+                    dist[*iter] = moreDist[k];
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::meshPoisson::shapeWithCopies
+(
+    const point& y,
+    const UList<vector>& translations,
+    DynamicList<label>& cells,
+    DynamicList<scalar>& w
+) const
+{
+    shapeAt(y, cells, w);
+    DynamicList<label> more;
+    DynamicList<scalar> moreW;
+    for (const vector& t : translations)
+    {
+        if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(radius_))
+        {
+            shapeAt(y + t, more, moreW);
+            cells.append(more);
+            w.append(moreW);
+        }
+    }
+}
+
+
+void Foam::meshPoisson::nearestWallPlane
+(
+    const point& y,
+    const scalar r,
+    point& p,
+    vector& n,
+    scalar& sign
+) const
+{
+    // The wall face nearest to y within r: the wall's tangent plane at
+    // the foot of y (as addWallImages) and its image sign
+    scalar best = sqr(r);
+    label nearest = -1;
+    forAll(wallC_, f)
+    {
+        const scalar d2 = magSqr(wallC_[f] - y);
+        if (d2 < best)
+        {
+            best = d2;
+            nearest = f;
+        }
+    }
+    if (nearest < 0)
+    {
+        return;
+    }
+    sign = wallSign_[nearest];
+    wallTangentPlane(nearest, y, p, n);
+}
+
+
+bool Foam::meshPoisson::clearOfProcessors(const point& y) const
+{
+    // The shape at y reaches no processor patch (faces within R: the
+    // neighbour holds part of it); faces within R belong to cells within
+    // 2R, the radius being larger than a cell
+    DynamicList<label> cells;
+    DynamicList<scalar> dist;
+    cellsNear(y, 2*radius_, cells, dist);
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const pointField& pts = mesh_.points();
+    for (const label celli : cells)
+    {
+        for (const label f : mesh_.cells()[celli])
+        {
+            if
+            (
+                mesh_.isInternalFace(f)
+             || !isA<processorPolyPatch>(pbm[pbm.whichPatch(f)])
+            )
+            {
+                continue;
+            }
+            const point& Cf = mesh_.faceCentres()[f];
+            const vector n(normalised(mesh_.faceAreas()[f]));
+            const scalar d = (Cf - y) & n;
+            if (d >= radius_)
+            {
+                continue;
+            }
+            scalar rf = 0;
+            for (const label pointi : mesh_.faces()[f])
+            {
+                rf = max(rf, mag(pts[pointi] - Cf));
+            }
+            if (mag(y + d*n - Cf) <= 1.001*rf)
+            {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+
+void Foam::meshPoisson::shapeWeightsHere
+(
+    const labelUList& origin,
+    const label nReal,
+    scalarField& wLocal,
+    scalarField& wImaged
+) const
+{
+    // Per charge: the weight of its shape on this processor, its cyclic
+    // copies' included (a translation, T = I and sign 1), and that of its
+    // wall images
+    wLocal.setSize(nReal);
+    wLocal = 0;
+    wImaged.setSize(nReal);
+    wImaged = 0;
+    for (label i = 0; i < shapeStart_.size() - 1; ++i)
+    {
+        scalar w = 0;
+        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
+        {
+            w += shapeWeights_[k];
+        }
+        if (i < nReal || (sourceT_[i] == tensor::I && sourceSign_[i] == 1))
+        {
+            wLocal[origin[i]] += w;
+        }
+        else
+        {
+            wImaged[origin[i]] += w;
+        }
+    }
+}
+
+
 void Foam::meshPoisson::removeSelfFields
 (
     const labelUList& origin,
@@ -1141,150 +1368,24 @@ void Foam::meshPoisson::removeSelfFields
             DynamicList<vector>& shifts
         )
     {
-        DynamicList<scalar> dist;
-        cellsNear(y, r, cells, dist);
-        shifts.setSize(cells.size());
-        shifts = Zero;
-        if (translations.empty())
-        {
-            return;
-        }
-        // A cell within reach twice (a period shorter than the patch's
-        // diameter) is taken once, where it is nearest to y (the cyclic
-        // faces between its two sides then hold fixed values)
-        Map<label> at(2*cells.size());
-        forAll(cells, j)
-        {
-            at.insert(cells[j], j);
-        }
-        DynamicList<scalar> moreDist;
-        DynamicList<label> more;
-        for (const vector& t : translations)
-        {
-            if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(r))
-            {
-                cellsNear(y + t, r, more, moreDist);
-                forAll(more, k)
-                {
-                    const auto iter = at.cfind(more[k]);
-                    if (!iter.found())
-                    {
-                        at.insert(more[k], cells.size());
-                        cells.append(more[k]);
-                        shifts.append(-t);
-                        dist.append(moreDist[k]);
-                    }
-                    else if (moreDist[k] < dist[*iter])
-                    {
-                        shifts[*iter] = -t;
-                        dist[*iter] = moreDist[k];
-                    }
-                }
-            }
-        }
+        unfoldedCellsNear(y, r, translations, cells, shifts);
     };
     const auto shape =
         [&](const point& y, DynamicList<label>& cells, DynamicList<scalar>& w)
     {
-        shapeAt(y, cells, w);
-        DynamicList<label> more;
-        DynamicList<scalar> moreW;
-        for (const vector& t : translations)
-        {
-            if (magSqr(localBb_.nearest(y + t) - y - t) < sqr(radius_))
-            {
-                shapeAt(y + t, more, moreW);
-                cells.append(more);
-                w.append(moreW);
-            }
-        }
+        shapeWithCopies(y, translations, cells, w);
     };
-    // The wall face nearest to y within r: the wall's tangent plane at
-    // the foot of y (as addWallImages) and its image sign
     const auto wallPlane =
         [&](const point& y, const scalar r, point& p, vector& n, scalar& sign)
     {
-        scalar best = sqr(r);
-        label nearest = -1;
-        forAll(wallC_, f)
-        {
-            const scalar d2 = magSqr(wallC_[f] - y);
-            if (d2 < best)
-            {
-                best = d2;
-                nearest = f;
-            }
-        }
-        if (nearest < 0)
-        {
-            return;
-        }
-        sign = wallSign_[nearest];
-        wallTangentPlane(nearest, y, p, n);
+        nearestWallPlane(y, r, p, n, sign);
     };
-    // The shape at y reaches no processor patch (faces within R: the
-    // neighbour holds part of it); faces within R belong to cells within
-    // 2R, the radius being larger than a cell
     const auto clear = [&](const point& y)
     {
-        DynamicList<label> cells;
-        DynamicList<scalar> dist;
-        cellsNear(y, 2*radius_, cells, dist);
-        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-        const pointField& pts = mesh_.points();
-        for (const label celli : cells)
-        {
-            for (const label f : mesh_.cells()[celli])
-            {
-                if
-                (
-                    mesh_.isInternalFace(f)
-                 || !isA<processorPolyPatch>(pbm[pbm.whichPatch(f)])
-                )
-                {
-                    continue;
-                }
-                const point& Cf = mesh_.faceCentres()[f];
-                const vector n(normalised(mesh_.faceAreas()[f]));
-                const scalar d = (Cf - y) & n;
-                if (d >= radius_)
-                {
-                    continue;
-                }
-                scalar rf = 0;
-                for (const label pointi : mesh_.faces()[f])
-                {
-                    rf = max(rf, mag(pts[pointi] - Cf));
-                }
-                if (mag(y + d*n - Cf) <= 1.001*rf)
-                {
-                    return false;
-                }
-            }
-        }
-        return true;
+        return clearOfProcessors(y);
     };
-    // Per charge: the weight of its shape on this processor, its cyclic
-    // copies' included (a translation, T = I and sign 1), and that of its
-    // wall images
-    scalarField wLocal(nReal, 0);
-    scalarField wImaged(nReal, 0);
-    for (label i = 0; i < shapeStart_.size() - 1; ++i)
-    {
-        scalar w = 0;
-        for (label k = shapeStart_[i]; k < shapeStart_[i + 1]; ++k)
-        {
-            w += shapeWeights_[k];
-        }
-        if (i < nReal || (sourceT_[i] == tensor::I && sourceSign_[i] == 1))
-        {
-            wLocal[origin[i]] += w;
-        }
-        else
-        {
-            wImaged[origin[i]] += w;
-        }
-    }
+    scalarField wLocal, wImaged;
+    shapeWeightsHere(origin, nReal, wLocal, wImaged);
     // In parallel a shape split between processors is solved by its owner
     // on the patch gathered from every processor, unless imaged on any
     // (meshUniform_ is the same on every processor, true in serial)

@@ -200,6 +200,125 @@ void Foam::ewaldSum::realSpace
 }
 
 
+namespace
+{
+
+using Foam::scalar;
+using Foam::label;
+
+// A wave vector of the half space (k and -k give complex conjugate terms):
+// its indices, k and the coefficient (4 pi/V) exp(-k^2/(4 a^2))/k^2
+struct kVec { label m0, m1, m2; Foam::vector k; scalar coef; };
+
+// The half space of wave vectors within kCut of the box L
+std::vector<kVec> halfSpace
+(
+    const Foam::vector& L,
+    const scalar alpha,
+    const scalar kCut,
+    const label n0,
+    const label n1,
+    const label n2
+)
+{
+    const scalar V = L.x()*L.y()*L.z();
+    const scalar kc2 = Foam::sqr(kCut);
+    const Foam::vector dk(twoPi/L.x(), twoPi/L.y(), twoPi/L.z());
+    std::vector<kVec> ks;
+    for (label m0 = 0; m0 <= n0; ++m0)
+    {
+        for (label m1 = -n1; m1 <= n1; ++m1)
+        {
+            for (label m2 = -n2; m2 <= n2; ++m2)
+            {
+                if (m0 == 0 && (m1 < 0 || (m1 == 0 && m2 <= 0))) continue;
+                const Foam::vector kv(m0*dk.x(), m1*dk.y(), m2*dk.z());
+                const scalar k2 = Foam::magSqr(kv);
+                if (k2 > kc2) continue;
+                ks.push_back
+                ({
+                    m0, m1, m2, kv,
+                    (4*pi/V)*Foam::exp(-k2/(4*alpha*alpha))/k2
+                });
+            }
+        }
+    }
+    return ks;
+}
+
+
+// exp(i k.x) by per-direction tables (m = -n..n; m = 0..n0 in the first
+// direction), for a chunk of particles at a time to bound the memory
+struct phaseTables
+{
+    const label chunk;
+    const label n[3];
+    const Foam::vector dk;
+    std::vector<scalar> c[3], s[3];
+
+    phaseTables
+    (
+        const label chunkSize,
+        const label n0,
+        const label n1,
+        const label n2,
+        const Foam::vector& L
+    )
+    :
+        chunk(chunkSize),
+        n{n0, n1, n2},
+        dk(twoPi/L.x(), twoPi/L.y(), twoPi/L.z())
+    {
+        c[0].resize((n0 + 1)*chunk);
+        s[0].resize((n0 + 1)*chunk);
+        c[1].resize((2*n1 + 1)*chunk);
+        s[1].resize((2*n1 + 1)*chunk);
+        c[2].resize((2*n2 + 1)*chunk);
+        s[2].resize((2*n2 + 1)*chunk);
+    }
+
+    // The tables of the nj points x[idx[j0 + jj]] (idx null: x[j0 + jj])
+    void fill
+    (
+        const Foam::UList<Foam::point>& x,
+        const label* idx,
+        const label j0,
+        const label nj
+    )
+    {
+        for (label jj = 0; jj < nj; ++jj)
+        {
+            const label j = idx ? idx[j0 + jj] : j0 + jj;
+            const Foam::point& xj = x[j];
+            const scalar ph[3] =
+                {dk.x()*xj.x(), dk.y()*xj.y(), dk.z()*xj.z()};
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                const label off = (d == 0) ? 0 : n[d];
+                const scalar cd = Foam::cos(ph[d]), sd = Foam::sin(ph[d]);
+                scalar cr = 1, sr = 0;
+                for (label m = 0; m <= n[d]; ++m)
+                {
+                    // Recurrence drifts ~m eps: fine for m <= ~100
+                    c[d][(off + m)*chunk + jj] = cr;
+                    s[d][(off + m)*chunk + jj] = sr;
+                    if (d > 0)
+                    {
+                        c[d][(off - m)*chunk + jj] = cr;
+                        s[d][(off - m)*chunk + jj] = -sr;
+                    }
+                    const scalar t = cr*cd - sr*sd;
+                    sr = sr*cd + cr*sd;
+                    cr = t;
+                }
+            }
+        }
+    }
+};
+
+} // End anonymous namespace
+
+
 void Foam::ewaldSum::kSpace
 (
     const parameters& p,
@@ -213,76 +332,26 @@ void Foam::ewaldSum::kSpace
     const label N = x.size();
     const bool all = targets.empty();
     const label M = all ? N : targets.size();
-    const scalar V = L_.x()*L_.y()*L_.z();
-    const scalar a = p.alpha;
-    const scalar kc2 = sqr(p.kCut);
-    const label n0 = p.nk[0], n1 = p.nk[1], n2 = p.nk[2];
-    const vector dk(twoPi/L_.x(), twoPi/L_.y(), twoPi/L_.z());
-
-    // Half space of k (k and -k give complex conjugate terms)
-    struct kVec { label m0, m1, m2; vector k; scalar coef; };
-    std::vector<kVec> ks;
-    for (label m0 = 0; m0 <= n0; ++m0)
-    {
-        for (label m1 = -n1; m1 <= n1; ++m1)
-        {
-            for (label m2 = -n2; m2 <= n2; ++m2)
-            {
-                if (m0 == 0 && (m1 < 0 || (m1 == 0 && m2 <= 0))) continue;
-                const vector kv(m0*dk.x(), m1*dk.y(), m2*dk.z());
-                const scalar k2 = magSqr(kv);
-                if (k2 > kc2) continue;
-                ks.push_back
-                ({
-                    m0, m1, m2, kv,
-                    (4*pi/V)*Foam::exp(-k2/(4*a*a))/k2
-                });
-            }
-        }
-    }
+    const label n1 = p.nk[1], n2 = p.nk[2];
+    const std::vector<kVec> ks
+    (
+        halfSpace(L_, p.alpha, p.kCut, p.nk[0], n1, n2)
+    );
     const label nK = ks.size();
 
-    // exp(i k.x) by per-direction tables (m = -n..n), built per chunk of
-    // particles to bound the memory: complex products written out by hand
-    // (std::complex multiplication checks for inf/nan and is slow)
+    // Complex products written out by hand (std::complex multiplication
+    // checks for inf/nan and is slow)
     const label chunk = 2048;
-    const label w0 = n0 + 1, w1 = 2*n1 + 1, w2 = 2*n2 + 1;
-    std::vector<scalar> c0(w0*chunk), s0(w0*chunk);
-    std::vector<scalar> c1(w1*chunk), s1(w1*chunk);
-    std::vector<scalar> c2(w2*chunk), s2(w2*chunk);
-
-    auto tables = [&](const label* idx, const label j0, const label nj)
+    phaseTables tab(chunk, p.nk[0], n1, n2, L_);
+    const std::vector<scalar>& c0 = tab.c[0];
+    const std::vector<scalar>& s0 = tab.s[0];
+    const std::vector<scalar>& c1 = tab.c[1];
+    const std::vector<scalar>& s1 = tab.s[1];
+    const std::vector<scalar>& c2 = tab.c[2];
+    const std::vector<scalar>& s2 = tab.s[2];
+    const auto tables = [&](const label* idx, const label j0, const label nj)
     {
-        for (label jj = 0; jj < nj; ++jj)
-        {
-            const label j = idx ? idx[j0 + jj] : j0 + jj;
-            const point& xj = x[j];
-            const scalar ph[3] =
-                {dk.x()*xj.x(), dk.y()*xj.y(), dk.z()*xj.z()};
-            std::vector<scalar>* C[3] = {&c0, &c1, &c2};
-            std::vector<scalar>* S[3] = {&s0, &s1, &s2};
-            const label nn[3] = {n0, n1, n2};
-            for (direction d = 0; d < 3; ++d)
-            {
-                const label off = (d == 0) ? 0 : nn[d];
-                const scalar cd = Foam::cos(ph[d]), sd = Foam::sin(ph[d]);
-                scalar cr = 1, sr = 0;
-                for (label m = 0; m <= nn[d]; ++m)
-                {
-                    // Recurrence drifts ~m eps: fine for m <= ~100
-                    (*C[d])[(off + m)*chunk + jj] = cr;
-                    (*S[d])[(off + m)*chunk + jj] = sr;
-                    if (d > 0)
-                    {
-                        (*C[d])[(off - m)*chunk + jj] = cr;
-                        (*S[d])[(off - m)*chunk + jj] = -sr;
-                    }
-                    const scalar t = cr*cd - sr*sd;
-                    sr = sr*cd + cr*sd;
-                    cr = t;
-                }
-            }
-        }
+        tab.fill(x, idx, j0, nj);
     };
 
     // Structure factors S(k) = sum_j q_j exp(i k.x_j)

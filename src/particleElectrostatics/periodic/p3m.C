@@ -172,6 +172,268 @@ int readFastErfc(const Foam::dictionary& dict)
     return -1;
 }
 
+// The real-space pair force over q_i q_j r,
+// g(r^2) = (erfc(a r)/r + 2a/sqrt(pi) exp(-a^2 r^2))/r^2: tabulated
+// between (rc/4)^2 and rc^2 (linear in r^2, relative error < 2e-6, as
+// LAMMPS' coul/long tables trade accuracy for speed); analytic inside, and
+// everywhere if !fast
+class realSpaceForce
+{
+    static constexpr label nTab = 8192;
+    const scalar a_, c2_, sIn_, invDs_;
+    const bool fast_;
+    const double* tab_;
+
+public:
+
+    // The table is made in table once (kept by the caller between calls)
+    realSpaceForce
+    (
+        const scalar alpha,
+        const scalar rc,
+        const bool fast,
+        std::vector<double>& table
+    )
+    :
+        a_(alpha),
+        c2_(2*alpha/Foam::sqrt(pi)),
+        sIn_(Foam::sqr(0.25*rc)),
+        invDs_(nTab/(rc*rc - sIn_)),
+        fast_(fast),
+        tab_(nullptr)
+    {
+        if (fast_ && table.size() != size_t(2*nTab))
+        {
+            table.resize(2*nTab);
+            scalar g0 = exact(sIn_);
+            for (label k = 0; k < nTab; ++k)
+            {
+                const scalar g1 = exact(sIn_ + (k + 1)/invDs_);
+                table[2*k] = g0;
+                table[2*k + 1] = g1 - g0;
+                g0 = g1;
+            }
+        }
+        tab_ = table.data();
+    }
+
+    scalar exact(const scalar r2) const
+    {
+        const scalar r = Foam::sqrt(r2);
+        const scalar ar = a_*r;
+        const scalar expm2 = Foam::exp(-ar*ar);
+        const scalar erfcv = fast_ ? erfcFast(ar, expm2) : std::erfc(ar);
+        return (erfcv/r + c2_*expm2)/r2;
+    }
+
+    scalar operator()(const scalar r2) const
+    {
+        if (fast_ && r2 >= sIn_)
+        {
+            const scalar u = (r2 - sIn_)*invDs_;
+            const label k = std::min(label(u), nTab - 1);
+            return tab_[2*k] + (u - k)*tab_[2*k + 1];
+        }
+        return exact(r2);
+    }
+};
+
+
+// Charges sorted by cell of a periodic cell list (counting sort), as
+// arrays of their coordinates, charges and whether kept (not a halo's)
+struct cellSortedCharges
+{
+    label nc[3];
+    std::vector<label> start, order, kept;
+    std::vector<scalar> xs, ys, zs, qs;
+
+    cellSortedCharges
+    (
+        const Foam::UList<Foam::point>& xw,
+        const Foam::UList<scalar>& q,
+        const label nKept,
+        const Foam::vector& L,
+        const label n[3]
+    )
+    {
+        const label N = xw.size();
+        for (Foam::direction d = 0; d < 3; ++d) nc[d] = n[d];
+        const label nCells = nc[0]*nc[1]*nc[2];
+        std::vector<label> cellOf(N);
+        start.assign(nCells + 1, 0);
+        order.resize(N);
+        for (label i = 0; i < N; ++i)
+        {
+            label c[3];
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                c[d] = std::min(nc[d] - 1, label(xw[i][d]*nc[d]/L[d]));
+            }
+            cellOf[i] = c[0] + nc[0]*(c[1] + nc[1]*c[2]);
+            ++start[cellOf[i] + 1];
+        }
+        for (label c = 0; c < nCells; ++c) start[c + 1] += start[c];
+        {
+            std::vector<label> fill(start.begin(), start.end() - 1);
+            for (label i = 0; i < N; ++i) order[fill[cellOf[i]]++] = i;
+        }
+        xs.resize(N);
+        ys.resize(N);
+        zs.resize(N);
+        qs.resize(N);
+        kept.resize(N);
+        for (label s = 0; s < N; ++s)
+        {
+            const label i = order[s];
+            xs[s] = xw[i].x();
+            ys[s] = xw[i].y();
+            zs[s] = xw[i].z();
+            qs[s] = q[i];
+            kept[s] = i < nKept;
+        }
+    }
+};
+
+
+// Half stencil of a cell list (each neighbour pair of cells once) within
+// reach cells
+std::vector<std::array<label, 3>> halfStencil(const label reach)
+{
+    std::vector<std::array<label, 3>> stencil;
+    for (label dz = -reach; dz <= reach; ++dz)
+    {
+        for (label dy = -reach; dy <= reach; ++dy)
+        {
+            for (label dx = -reach; dx <= reach; ++dx)
+            {
+                if (dz > 0 || (dz == 0 && (dy > 0 || (dy == 0 && dx > 0))))
+                {
+                    stencil.push_back({dx, dy, dz});
+                }
+            }
+        }
+    }
+    return stencil;
+}
+
+
+// The pair forces within rc2 of the sorted charges c, by cells of the
+// periodic box L and the stencil of reach cells, added to (fx, fy, fz) in
+// sorted order. Candidates within rc are first compacted without branches
+// (the accept test is unpredictable: about 27 % pass), then their forces
+// computed in a second, predictable loop
+template<class Force>
+void cellPairForces
+(
+    const cellSortedCharges& c,
+    const Foam::vector& L,
+    const label reach,
+    const scalar rc2,
+    const Force& pairForce,
+    std::vector<scalar>& fx,
+    std::vector<scalar>& fy,
+    std::vector<scalar>& fz
+)
+{
+    const label* nc = c.nc;
+    const std::vector<label>& start = c.start;
+    const std::vector<label>& kept = c.kept;
+    const std::vector<scalar>& xs = c.xs;
+    const std::vector<scalar>& ys = c.ys;
+    const std::vector<scalar>& zs = c.zs;
+    const std::vector<scalar>& qs = c.qs;
+    const label nCells = nc[0]*nc[1]*nc[2];
+    const std::vector<std::array<label, 3>> stencil(halfStencil(reach));
+    label maxCell = 0;
+    for (label cl = 0; cl < nCells; ++cl)
+    {
+        maxCell = std::max(maxCell, start[cl + 1] - start[cl]);
+    }
+    const label nSt = stencil.size();
+    const label cap = maxCell*(nSt + 1) + 1;
+    std::vector<label> bt(cap);
+    std::vector<scalar> bx(cap), by(cap), bz(cap), br(cap);
+    std::vector<label> nb0(nSt), nb1(nSt);
+    std::vector<scalar> shx(nSt), shy(nSt), shz(nSt);
+
+    for (label cz = 0; cz < nc[2]; ++cz)
+    for (label cy = 0; cy < nc[1]; ++cy)
+    for (label cx = 0; cx < nc[0]; ++cx)
+    {
+        const label cl = cx + nc[0]*(cy + nc[1]*cz);
+        const label s0 = start[cl], s1 = start[cl + 1];
+        if (s0 == s1) continue;
+
+        // Neighbour cells with their periodic shifts
+        for (label k = 0; k < nSt; ++k)
+        {
+            const auto& o = stencil[k];
+            label cn[3] = {cx + o[0], cy + o[1], cz + o[2]};
+            scalar sh[3] = {0, 0, 0};
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                if (cn[d] < 0) { cn[d] += nc[d]; sh[d] = -L[d]; }
+                else if (cn[d] >= nc[d]) { cn[d] -= nc[d]; sh[d] = L[d]; }
+            }
+            const label cc = cn[0] + nc[0]*(cn[1] + nc[1]*cn[2]);
+            nb0[k] = start[cc];
+            nb1[k] = start[cc + 1];
+            shx[k] = sh[0];
+            shy[k] = sh[1];
+            shz[k] = sh[2];
+        }
+
+        for (label s = s0; s < s1; ++s)
+        {
+            const scalar xi = xs[s], yi = ys[s], zi = zs[s], qi = qs[s];
+            const label keptI = kept[s];
+            label m = 0;
+            for (label t = s + 1; t < s1; ++t)
+            {
+                const scalar dx = xi - xs[t], dy = yi - ys[t],
+                    dz = zi - zs[t];
+                const scalar r2 = dx*dx + dy*dy + dz*dz;
+                bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz; br[m] = r2;
+                m += (r2 < rc2) & (keptI | kept[t]);
+            }
+            for (label k = 0; k < nSt; ++k)
+            {
+                const scalar xk = xi - shx[k], yk = yi - shy[k],
+                    zk = zi - shz[k];
+                for (label t = nb0[k]; t < nb1[k]; ++t)
+                {
+                    const scalar dx = xk - xs[t], dy = yk - ys[t],
+                        dz = zk - zs[t];
+                    const scalar r2 = dx*dx + dy*dy + dz*dz;
+                    bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz;
+                    br[m] = r2;
+                    m += (r2 < rc2) & (keptI | kept[t]);
+                }
+            }
+
+            scalar fxi = 0, fyi = 0, fzi = 0;
+            for (label j = 0; j < m; ++j)
+            {
+                const scalar r2 = br[j];
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Charges " << c.order[s] << " and " << c.order[bt[j]]
+                        << " coincide (modulo the box)"
+                        << Foam::exit(Foam::FatalError);
+                }
+                const label t = bt[j];
+                const scalar g = qi*qs[t]*pairForce(r2);
+                const scalar gx = g*bx[j], gy = g*by[j], gz = g*bz[j];
+                fxi += gx; fyi += gy; fzi += gz;
+                fx[t] -= gx; fy[t] -= gy; fz[t] -= gz;
+            }
+            fx[s] += fxi; fy[s] += fyi; fz[s] += fzi;
+        }
+    }
+}
+
+
 } // End anonymous namespace
 
 
@@ -726,47 +988,7 @@ void Foam::p3m::realSpace
     // Pairs of two copies (a halo's) give nothing this processor keeps
     const label nKept = nOwn < 0 ? N : nOwn;
     const scalar rc = p_.rCut, rc2 = rc*rc;
-    const scalar a = p_.alpha;
-    const scalar c2 = 2*a/Foam::sqrt(pi);
-    const bool fast = p_.fastErfc;
-
-    // Tabulated g(r^2) = |F|/(qi qj r) between (rc/4)^2 and rc^2 (linear in
-    // r^2, relative error < 2e-6, as LAMMPS' coul/long tables trade
-    // accuracy for speed); analytic inside, and everywhere if !fast
-    const label nTab = 8192;
-    const scalar sIn = sqr(0.25*rc);
-    const scalar invDs = nTab/(rc2 - sIn);
-    auto exact = [&](const scalar r2) -> scalar
-    {
-        const scalar r = Foam::sqrt(r2);
-        const scalar ar = a*r;
-        const scalar expm2 = Foam::exp(-ar*ar);
-        const scalar erfcv = fast ? erfcFast(ar, expm2) : std::erfc(ar);
-        return (erfcv/r + c2*expm2)/r2;
-    };
-    if (fast && tab_.size() != size_t(2*nTab))
-    {
-        tab_.resize(2*nTab);
-        scalar g0 = exact(sIn);
-        for (label k = 0; k < nTab; ++k)
-        {
-            const scalar g1 = exact(sIn + (k + 1)/invDs);
-            tab_[2*k] = g0;
-            tab_[2*k + 1] = g1 - g0;
-            g0 = g1;
-        }
-    }
-    const double* tab = tab_.data();
-    auto pairForce = [&](const scalar r2) -> scalar
-    {
-        if (fast && r2 >= sIn)
-        {
-            const scalar u = (r2 - sIn)*invDs;
-            const label k = std::min(label(u), nTab - 1);
-            return tab[2*k] + (u - k)*tab[2*k + 1];
-        }
-        return exact(r2);
-    };
+    const realSpaceForce pairForce(p_.alpha, rc, p_.fastErfc, tab_);
 
     // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
     // vs 15 % for cells of rc), else rc, else all pairs
@@ -808,146 +1030,13 @@ void Foam::p3m::realSpace
         return;
     }
 
-    // Cell list, particles sorted by cell (counting sort)
-    const label nCells = nc[0]*nc[1]*nc[2];
-    std::vector<label> cellOf(N), start(nCells + 1, 0), order(N);
-    for (label i = 0; i < N; ++i)
-    {
-        label c[3];
-        for (direction d = 0; d < 3; ++d)
-        {
-            c[d] = std::min(nc[d] - 1, label(xw[i][d]*nc[d]/L_[d]));
-        }
-        cellOf[i] = c[0] + nc[0]*(c[1] + nc[1]*c[2]);
-        ++start[cellOf[i] + 1];
-    }
-    for (label c = 0; c < nCells; ++c) start[c + 1] += start[c];
-    {
-        std::vector<label> fill(start.begin(), start.end() - 1);
-        for (label i = 0; i < N; ++i) order[fill[cellOf[i]]++] = i;
-    }
-    std::vector<scalar> xs(N), ys(N), zs(N), qs(N), fx(N, 0), fy(N, 0),
-        fz(N, 0);
-    std::vector<label> kept(N);
+    // Cell list, charges sorted by cell
+    const cellSortedCharges sorted(xw, q, nKept, L_, nc);
+    std::vector<scalar> fx(N, 0), fy(N, 0), fz(N, 0);
+    cellPairForces(sorted, L_, reach, rc2, pairForce, fx, fy, fz);
     for (label s = 0; s < N; ++s)
     {
-        const label i = order[s];
-        xs[s] = xw[i].x();
-        ys[s] = xw[i].y();
-        zs[s] = xw[i].z();
-        qs[s] = q[i];
-        kept[s] = i < nKept;
-    }
-
-    // Half stencil (each neighbour pair of cells once) + the own cell
-    std::vector<std::array<label, 3>> stencil;
-    for (label dz = -reach; dz <= reach; ++dz)
-    {
-        for (label dy = -reach; dy <= reach; ++dy)
-        {
-            for (label dx = -reach; dx <= reach; ++dx)
-            {
-                if (dz > 0 || (dz == 0 && (dy > 0 || (dy == 0 && dx > 0))))
-                {
-                    stencil.push_back({dx, dy, dz});
-                }
-            }
-        }
-    }
-
-    // Candidates within rc are first compacted without branches (the
-    // accept test is unpredictable: about 27 % pass), then their forces
-    // computed in a second, predictable loop
-    label maxCell = 0;
-    for (label c = 0; c < nCells; ++c)
-    {
-        maxCell = std::max(maxCell, start[c + 1] - start[c]);
-    }
-    const label nSt = stencil.size();
-    const label cap = maxCell*(nSt + 1) + 1;
-    std::vector<label> bt(cap);
-    std::vector<scalar> bx(cap), by(cap), bz(cap), br(cap);
-    std::vector<label> nb0(nSt), nb1(nSt);
-    std::vector<scalar> shx(nSt), shy(nSt), shz(nSt);
-
-    for (label cz = 0; cz < nc[2]; ++cz)
-    for (label cy = 0; cy < nc[1]; ++cy)
-    for (label cx = 0; cx < nc[0]; ++cx)
-    {
-        const label c = cx + nc[0]*(cy + nc[1]*cz);
-        const label s0 = start[c], s1 = start[c + 1];
-        if (s0 == s1) continue;
-
-        // Neighbour cells with their periodic shifts
-        for (label k = 0; k < nSt; ++k)
-        {
-            const auto& o = stencil[k];
-            label cn[3] = {cx + o[0], cy + o[1], cz + o[2]};
-            scalar sh[3] = {0, 0, 0};
-            for (direction d = 0; d < 3; ++d)
-            {
-                if (cn[d] < 0) { cn[d] += nc[d]; sh[d] = -L_[d]; }
-                else if (cn[d] >= nc[d]) { cn[d] -= nc[d]; sh[d] = L_[d]; }
-            }
-            const label cc = cn[0] + nc[0]*(cn[1] + nc[1]*cn[2]);
-            nb0[k] = start[cc];
-            nb1[k] = start[cc + 1];
-            shx[k] = sh[0];
-            shy[k] = sh[1];
-            shz[k] = sh[2];
-        }
-
-        for (label s = s0; s < s1; ++s)
-        {
-            const scalar xi = xs[s], yi = ys[s], zi = zs[s], qi = qs[s];
-            const label keptI = kept[s];
-            label m = 0;
-            for (label t = s + 1; t < s1; ++t)
-            {
-                const scalar dx = xi - xs[t], dy = yi - ys[t],
-                    dz = zi - zs[t];
-                const scalar r2 = dx*dx + dy*dy + dz*dz;
-                bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz; br[m] = r2;
-                m += (r2 < rc2) & (keptI | kept[t]);
-            }
-            for (label k = 0; k < nSt; ++k)
-            {
-                const scalar xk = xi - shx[k], yk = yi - shy[k],
-                    zk = zi - shz[k];
-                for (label t = nb0[k]; t < nb1[k]; ++t)
-                {
-                    const scalar dx = xk - xs[t], dy = yk - ys[t],
-                        dz = zk - zs[t];
-                    const scalar r2 = dx*dx + dy*dy + dz*dz;
-                    bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz;
-                    br[m] = r2;
-                    m += (r2 < rc2) & (keptI | kept[t]);
-                }
-            }
-
-            scalar fxi = 0, fyi = 0, fzi = 0;
-            for (label j = 0; j < m; ++j)
-            {
-                const scalar r2 = br[j];
-                if (r2 == 0)
-                {
-                    FatalErrorInFunction
-                        << "Charges " << order[s] << " and " << order[bt[j]]
-                        << " coincide (modulo the box)" << exit(FatalError);
-                }
-                const label t = bt[j];
-                const scalar g = qi*qs[t]*pairForce(r2);
-                const scalar gx = g*bx[j], gy = g*by[j], gz = g*bz[j];
-                fxi += gx; fyi += gy; fzi += gz;
-                fx[t] -= gx; fy[t] -= gy; fz[t] -= gz;
-            }
-            fx[s] += fxi; fy[s] += fyi; fz[s] += fzi;
-        }
-    }
-
-    for (label s = 0; s < N; ++s)
-    {
-        f[order[s]] += vector(fx[s], fy[s], fz[s]);
+        f[sorted.order[s]] += vector(fx[s], fy[s], fz[s]);
     }
 }
 

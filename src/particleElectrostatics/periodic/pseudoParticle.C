@@ -91,23 +91,30 @@ Foam::label Foam::pseudoParticle::Ne(const label Np) const
 }
 
 
-void Foam::pseudoParticle::evaluate
+void Foam::pseudoParticle::buildGrid
 (
     const UList<point>& x,
     const UList<scalar>& q,
-    UList<vector>* f,
-    UList<scalar>* qSum
+    cellGrid& g
 ) const
 {
     const label N = x.size();
-    if (N == 0) return;
-
-    const label ne = Ne(N);
-    const vector dx(L_.x()/ne, L_.y()/ne, L_.z()/ne);
+    const label ne = g.ne = Ne(N);
+    const vector dx = g.dx = vector(L_.x()/ne, L_.y()/ne, L_.z()/ne);
     const label nCells = ne*ne*ne;
+    std::vector<label>& cellOf = g.cellOf;
+    std::vector<label>& start = g.start;
+    std::vector<label>& order = g.order;
+    std::vector<point>& xs = g.xs;
+    std::vector<scalar>& qs = g.qs;
+    std::vector<scalar>& Qk = g.Qk;
+    std::vector<point>& xk = g.xk;
+    std::vector<vector>& hk = g.hk;
+    cellOf.resize(N);
+    start.assign(nCells + 1, 0);
+    order.resize(N);
 
     // Cell of each particle and particles sorted by cell (counting sort)
-    std::vector<label> cellOf(N), start(nCells + 1, 0), order(N);
     std::vector<point> xw(N);
     for (label i = 0; i < N; ++i)
     {
@@ -125,8 +132,8 @@ void Foam::pseudoParticle::evaluate
         std::vector<label> fill(start.begin(), start.end() - 1);
         for (label i = 0; i < N; ++i) order[fill[cellOf[i]]++] = i;
     }
-    std::vector<point> xs(N);
-    std::vector<scalar> qs(N);
+    xs.resize(N);
+    qs.resize(N);
     for (label s = 0; s < N; ++s)
     {
         xs[s] = xw[order[s]];
@@ -135,9 +142,9 @@ void Foam::pseudoParticle::evaluate
 
     // Pseudo-particles (Eqs. 14-16) and their rectangles (Eqs. A.1-A.2):
     // centre xk, half-widths hk (to the nearest cell face)
-    std::vector<scalar> Qk(nCells, 0);
-    std::vector<point> xk(nCells);
-    std::vector<vector> hk(nCells);
+    Qk.assign(nCells, 0);
+    xk.resize(nCells);
+    hk.resize(nCells);
     for (label c = 0; c < nCells; ++c)
     {
         const label ci[3] = {c % ne, (c/ne) % ne, c/(ne*ne)};
@@ -163,15 +170,27 @@ void Foam::pseudoParticle::evaluate
         }
         xk[c] = xe;
     }
+}
 
+
+void Foam::pseudoParticle::sumAt
+(
+    const cellGrid& g,
+    const label s,
+    vector& fp,
+    scalar& qp
+) const
+{
+    const label ne = g.ne;
+    const vector& dx = g.dx;
+    const std::vector<label>& start = g.start;
+    const std::vector<label>& order = g.order;
+    const std::vector<point>& xs = g.xs;
+    const std::vector<scalar>& qs = g.qs;
+    const std::vector<scalar>& Qk = g.Qk;
+    const std::vector<point>& xk = g.xk;
+    const std::vector<vector>& hk = g.hk;
     const label nImg = 2*Nper_ - 1;
-    if (2*Nv_ + 1 > nImg*ne - 1)
-    {
-        FatalErrorInFunction
-            << "Ne = " << ne << ", Nv = " << Nv_ << ", Nper = " << Nper_
-            << " violate Boutsikakis 2023, Eq. (18):"
-            << " 2 Nv + 1 <= (2 Nper - 1) Ne - 1" << exit(FatalError);
-    }
     const vector half(0.5*nImg*L_.x(), 0.5*nImg*L_.y(), 0.5*nImg*L_.z());
 
     // Floor division for negative unwrapped cell indices
@@ -180,107 +199,135 @@ void Foam::pseudoParticle::evaluate
         return (a >= 0) ? a/b : -((-a + b - 1)/b);
     };
 
-    for (label s = 0; s < N; ++s)
+    const point& xp = xs[s];
+    const label cp = g.cellOf[order[s]];
+    const label cpi[3] = {cp % ne, (cp/ne) % ne, cp/(ne*ne)};
+    const point lo = xp - half, hi = xp + half;
+    label u0[3], u1[3];
+    for (direction d = 0; d < 3; ++d)
     {
-        const point& xp = xs[s];
-        const label cp = cellOf[order[s]];
-        const label cpi[3] = {cp % ne, (cp/ne) % ne, cp/(ne*ne)};
-        const point lo = xp - half, hi = xp + half;
-        label u0[3], u1[3];
-        for (direction d = 0; d < 3; ++d)
-        {
-            u0[d] = label(std::floor(lo[d]/dx[d]));
-            u1[d] = label(std::floor(hi[d]/dx[d]));
-        }
+        u0[d] = label(std::floor(lo[d]/dx[d]));
+        u1[d] = label(std::floor(hi[d]/dx[d]));
+    }
 
-        vector fp(Zero);
-        scalar qp = 0;
+    fp = Zero;
+    qp = 0;
 
-        for (label a2 = u0[2]; a2 <= u1[2]; ++a2)
+    for (label a2 = u0[2]; a2 <= u1[2]; ++a2)
+    {
+        const label w2 = fdiv(a2, ne);
+        const label k2 = a2 - w2*ne;
+        const scalar s2 = w2*L_.z();
+        const bool near2 = mag(a2 - cpi[2]) <= Nv_;
+        for (label a1 = u0[1]; a1 <= u1[1]; ++a1)
         {
-            const label w2 = fdiv(a2, ne);
-            const label k2 = a2 - w2*ne;
-            const scalar s2 = w2*L_.z();
-            const bool near2 = mag(a2 - cpi[2]) <= Nv_;
-            for (label a1 = u0[1]; a1 <= u1[1]; ++a1)
+            const label w1 = fdiv(a1, ne);
+            const label k1 = a1 - w1*ne;
+            const scalar s1 = w1*L_.y();
+            const bool near1 = near2 && mag(a1 - cpi[1]) <= Nv_;
+            for (label a0 = u0[0]; a0 <= u1[0]; ++a0)
             {
-                const label w1 = fdiv(a1, ne);
-                const label k1 = a1 - w1*ne;
-                const scalar s1 = w1*L_.y();
-                const bool near1 = near2 && mag(a1 - cpi[1]) <= Nv_;
-                for (label a0 = u0[0]; a0 <= u1[0]; ++a0)
-                {
-                    const label w0 = fdiv(a0, ne);
-                    const label k0 = a0 - w0*ne;
-                    const vector shift(w0*L_.x(), s1, s2);
-                    const label c = k0 + ne*(k1 + ne*k2);
+                const label w0 = fdiv(a0, ne);
+                const label k0 = a0 - w0*ne;
+                const vector shift(w0*L_.x(), s1, s2);
+                const label c = k0 + ne*(k1 + ne*k2);
 
-                    if (near1 && mag(a0 - cpi[0]) <= Nv_)
+                if (near1 && mag(a0 - cpi[0]) <= Nv_)
+                {
+                    // Short range: direct with the particles (Eq. 17)
+                    const bool own = (w0 == 0 && w1 == 0 && w2 == 0);
+                    for (label t = start[c]; t < start[c + 1]; ++t)
                     {
-                        // Short range: direct with the particles (Eq. 17)
-                        const bool own = (w0 == 0 && w1 == 0 && w2 == 0);
-                        for (label t = start[c]; t < start[c + 1]; ++t)
+                        if (own && t == s) continue;
+                        const vector r = xp - (xs[t] + shift);
+                        const scalar r2 = magSqr(r);
+                        if (r2 == 0)
                         {
-                            if (own && t == s) continue;
-                            const vector r = xp - (xs[t] + shift);
-                            const scalar r2 = magSqr(r);
-                            if (r2 == 0)
-                            {
-                                FatalErrorInFunction
-                                    << "Charges " << order[s] << " and "
-                                    << order[t] << " coincide at " << xp
-                                    << " (modulo the box)"
-                                    << exit(FatalError);
-                            }
-                            fp += (qs[t]/(r2*Foam::sqrt(r2)))*r;
-                            qp += qs[t];
+                            FatalErrorInFunction
+                                << "Charges " << order[s] << " and "
+                                << order[t] << " coincide at " << xp
+                                << " (modulo the box)"
+                                << exit(FatalError);
                         }
+                        fp += (qs[t]/(r2*Foam::sqrt(r2)))*r;
+                        qp += qs[t];
+                    }
+                    continue;
+                }
+
+                if (Qk[c] == 0) continue;
+
+                // Long range: the pseudo-particle rectangle, cut by
+                // the cube [lo, hi) (App. A.1, Fig. 11)
+                const point xc = xk[c] + shift;
+                const vector& h = hk[c];
+                scalar frac = 1;
+                point xSec = xc;
+                for (direction d = 0; d < 3 && frac > 0; ++d)
+                {
+                    const scalar rl = xc[d] - h[d], rh = xc[d] + h[d];
+                    if (rl >= lo[d] && rh <= hi[d]) continue;
+                    if (h[d] == 0)
+                    {
+                        // Degenerate rectangle (single point)
+                        if (xc[d] < lo[d] || xc[d] >= hi[d]) frac = 0;
                         continue;
                     }
-
-                    if (Qk[c] == 0) continue;
-
-                    // Long range: the pseudo-particle rectangle, cut by
-                    // the cube [lo, hi) (App. A.1, Fig. 11)
-                    const point xc = xk[c] + shift;
-                    const vector& h = hk[c];
-                    scalar frac = 1;
-                    point xSec = xc;
-                    for (direction d = 0; d < 3 && frac > 0; ++d)
+                    const scalar sl = max(rl, lo[d]);
+                    const scalar sh = min(rh, hi[d]);
+                    if (sh <= sl)
                     {
-                        const scalar rl = xc[d] - h[d], rh = xc[d] + h[d];
-                        if (rl >= lo[d] && rh <= hi[d]) continue;
-                        if (h[d] == 0)
-                        {
-                            // Degenerate rectangle (single point)
-                            if (xc[d] < lo[d] || xc[d] >= hi[d]) frac = 0;
-                            continue;
-                        }
-                        const scalar sl = max(rl, lo[d]);
-                        const scalar sh = min(rh, hi[d]);
-                        if (sh <= sl)
-                        {
-                            frac = 0;
-                            continue;
-                        }
-                        frac *= (sh - sl)/(rh - rl);
-                        xSec[d] = 0.5*(sl + sh);
+                        frac = 0;
+                        continue;
                     }
-                    if (frac <= 0) continue;
-
-                    const scalar Q = frac*Qk[c];
-                    const vector r = xp - xSec;
-                    const scalar r2 = magSqr(r);
-                    if (r2 > 0)
-                    {
-                        fp += (Q/(r2*Foam::sqrt(r2)))*r;
-                    }
-                    qp += Q;
+                    frac *= (sh - sl)/(rh - rl);
+                    xSec[d] = 0.5*(sl + sh);
                 }
+                if (frac <= 0) continue;
+
+                const scalar Q = frac*Qk[c];
+                const vector r = xp - xSec;
+                const scalar r2 = magSqr(r);
+                if (r2 > 0)
+                {
+                    fp += (Q/(r2*Foam::sqrt(r2)))*r;
+                }
+                qp += Q;
             }
         }
+    }
+}
 
-        const label i = order[s];
+
+void Foam::pseudoParticle::evaluate
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    UList<vector>* f,
+    UList<scalar>* qSum
+) const
+{
+    const label N = x.size();
+    if (N == 0) return;
+
+    cellGrid g;
+    buildGrid(x, q, g);
+    const label ne = g.ne;
+    const label nImg = 2*Nper_ - 1;
+    if (2*Nv_ + 1 > nImg*ne - 1)
+    {
+        FatalErrorInFunction
+            << "Ne = " << ne << ", Nv = " << Nv_ << ", Nper = " << Nper_
+            << " violate Boutsikakis 2023, Eq. (18):"
+            << " 2 Nv + 1 <= (2 Nper - 1) Ne - 1" << exit(FatalError);
+    }
+
+    for (label s = 0; s < N; ++s)
+    {
+        vector fp;
+        scalar qp;
+        sumAt(g, s, fp, qp);
+        const label i = g.order[s];
         if (f)
         {
             (*f)[i] = (k_*q[i])*fp;

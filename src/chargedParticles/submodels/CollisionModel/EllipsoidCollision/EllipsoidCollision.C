@@ -612,11 +612,10 @@ bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
 
 
 template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
+Foam::labelList
+Foam::EllipsoidCollision<CloudType>::previousListIndices() const
 {
-    ++nListBuilds_;
     const label n = parcels_.size();
-
     // Index of every parcel in the previous list (-1: new to the list),
     // for the contact histories
     labelList oldIndex(n, -1);
@@ -644,6 +643,114 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
             }
         }
     }
+    return oldIndex;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::cacheWallFaceBoxes()
+{
+    // Each boundary face's bounding box, and whether the face is that box
+    // (the mesh is static)
+    const polyMesh& mesh = this->owner().mesh();
+    if (wallFaceBb_.size() != mesh.nBoundaryFaces())
+    {
+        wallFaceBb_.setSize(mesh.nBoundaryFaces());
+        wallFaceIsBox_.setSize(mesh.nBoundaryFaces());
+        forAll(wallFaceBb_, bFacei)
+        {
+            const label facei = mesh.nInternalFaces() + bFacei;
+            const boundBox& bb = wallFaceBb_[bFacei] =
+                boundBox(mesh.points(), mesh.faces()[facei], false);
+
+            // A plane face along axis k whose area is that of its box in
+            // the other two directions is that box
+            const vector& Sf = mesh.faceAreas()[facei];
+            const scalar magSf = mag(Sf);
+            const vector span = bb.span();
+            direction k = 0;
+            for (direction d = 1; d < vector::nComponents; ++d)
+            {
+                if (mag(Sf[d]) > mag(Sf[k]))
+                {
+                    k = d;
+                }
+            }
+            const direction a = (k + 1) % 3;
+            const direction b = (k + 2) % 3;
+            wallFaceIsBox_[bFacei] =
+                magSf > 0
+             && mag(Sf[k]) >= (1 - 1e-12)*magSf
+             && span[k] <= 1e-9*Foam::sqrt(magSf)
+             && mag(span[a]*span[b] - magSf) <= 1e-9*magSf;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::findWallFaces()
+{
+    // Wall faces in reach: those of the interaction list of the parcel's
+    // cell whose bounding box comes within r + skin. Complete while the
+    // parcel stays within skin/2 of x_ (the list is rebuilt otherwise):
+    // the list of a cell holds the faces whose boxes come within
+    // maxInteractionDistance of the cell's box (InteractionLists), and
+    // r + skin/2 <= maxInteractionDistance
+    const polyMesh& mesh = this->owner().mesh();
+    const label n = parcels_.size();
+    const labelListList& directWallFaces = il_.dwfil();
+    wallStart_.setSize(n + 1);
+    wallStart_[0] = 0;
+    wallFaces_.clear();
+    wallParcels_.clear();
+    forAll(parcels_, i)
+    {
+        parcelType& p = *parcels_[i];
+        const scalar r = bodies_[i].radius;
+        if (r + 0.5*skin_ > maxDistance_)
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "Entry maxInteractionDistance = "
+                << Foam::name(maxDistance_)
+                << " is too small for parcel (origProc " << p.origProc()
+                << ", origId " << p.origId() << ") with the bounding radius "
+                << Foam::name(r) << " m of its collision shell: it must be"
+                << " >= the radius + neighbourSkin/2 = "
+                << Foam::name(r + 0.5*skin_) << exit(FatalIOError);
+        }
+        const point& x = x_[i];
+        for (const label facei : directWallFaces[p.cell()])
+        {
+            const boundBox& bb = wallFaceBb_[facei - mesh.nInternalFaces()];
+            if (magSqr(x - bb.nearest(x)) < sqr(r + skin_))
+            {
+                wallFaces_.append(facei);
+            }
+        }
+        wallStart_[i + 1] = wallFaces_.size();
+        if (wallStart_[i + 1] > wallStart_[i])
+        {
+            wallParcels_.append(i);
+        }
+        else if (!referring())
+        {
+            // No wall in reach: a wall contact of the last step has
+            // ended (in parallel all records are renewed every step)
+            mutableWallRecords(p.collisionRecords()).clear();
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
+{
+    ++nListBuilds_;
+    const label n = parcels_.size();
+
+    // The previous list's contact histories, carried below
+    const labelList oldIndex(previousListIndices());
     labelList oldStart;
     oldStart.transfer(listStart_);
     labelList oldPartners;
@@ -708,87 +815,8 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
 
     carryHistories(oldStart, oldPartners, oldXi, oldTouching, oldN, oldIndex);
 
-    // Wall faces in reach: those of the interaction list of the parcel's
-    // cell whose bounding box comes within r + skin. Complete while the
-    // parcel stays within skin/2 of x_ (the list is rebuilt otherwise):
-    // the list of a cell holds the faces whose boxes come within
-    // maxInteractionDistance of the cell's box (InteractionLists), and
-    // r + skin/2 <= maxInteractionDistance
-    const polyMesh& mesh = this->owner().mesh();
-    if (wallFaceBb_.size() != mesh.nBoundaryFaces())
-    {
-        // (the mesh is static)
-        wallFaceBb_.setSize(mesh.nBoundaryFaces());
-        wallFaceIsBox_.setSize(mesh.nBoundaryFaces());
-        forAll(wallFaceBb_, bFacei)
-        {
-            const label facei = mesh.nInternalFaces() + bFacei;
-            const boundBox& bb = wallFaceBb_[bFacei] =
-                boundBox(mesh.points(), mesh.faces()[facei], false);
-
-            // A plane face along axis k whose area is that of its box in
-            // the other two directions is that box
-            const vector& Sf = mesh.faceAreas()[facei];
-            const scalar magSf = mag(Sf);
-            const vector span = bb.span();
-            direction k = 0;
-            for (direction d = 1; d < vector::nComponents; ++d)
-            {
-                if (mag(Sf[d]) > mag(Sf[k]))
-                {
-                    k = d;
-                }
-            }
-            const direction a = (k + 1) % 3;
-            const direction b = (k + 2) % 3;
-            wallFaceIsBox_[bFacei] =
-                magSf > 0
-             && mag(Sf[k]) >= (1 - 1e-12)*magSf
-             && span[k] <= 1e-9*Foam::sqrt(magSf)
-             && mag(span[a]*span[b] - magSf) <= 1e-9*magSf;
-        }
-    }
-    const labelListList& directWallFaces = il_.dwfil();
-    wallStart_.setSize(n + 1);
-    wallStart_[0] = 0;
-    wallFaces_.clear();
-    wallParcels_.clear();
-    forAll(parcels_, i)
-    {
-        parcelType& p = *parcels_[i];
-        const scalar r = bodies_[i].radius;
-        if (r + 0.5*skin_ > maxDistance_)
-        {
-            FatalIOErrorInFunction(this->coeffDict())
-                << "Entry maxInteractionDistance = "
-                << Foam::name(maxDistance_)
-                << " is too small for parcel (origProc " << p.origProc()
-                << ", origId " << p.origId() << ") with the bounding radius "
-                << Foam::name(r) << " m of its collision shell: it must be"
-                << " >= the radius + neighbourSkin/2 = "
-                << Foam::name(r + 0.5*skin_) << exit(FatalIOError);
-        }
-        const point& x = x_[i];
-        for (const label facei : directWallFaces[p.cell()])
-        {
-            const boundBox& bb = wallFaceBb_[facei - mesh.nInternalFaces()];
-            if (magSqr(x - bb.nearest(x)) < sqr(r + skin_))
-            {
-                wallFaces_.append(facei);
-            }
-        }
-        wallStart_[i + 1] = wallFaces_.size();
-        if (wallStart_[i + 1] > wallStart_[i])
-        {
-            wallParcels_.append(i);
-        }
-        else if (!referring())
-        {
-            // No wall in reach: a wall contact of the last step has
-            // ended (in parallel all records are renewed every step)
-            mutableWallRecords(p.collisionRecords()).clear();
-        }
-    }
+    cacheWallFaceBoxes();
+    findWallFaces();
 }
 
 
@@ -1170,6 +1198,112 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
 
 
 template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::wallFaceContact
+(
+    const label i,
+    const face& f,
+    const pointField& pts,
+    const point& fc,
+    const vector& nOutOfDomain,
+    const scalar faceArea,
+    const boundBox& bb,
+    const bool box,
+    const label patchi,
+    DynamicList<point>& contactPoints
+)
+{
+    const contactBody& b = bodies_[i];
+    const point& xp = x_[i];
+    const scalar r = b.radius;
+
+    // The face's plane or its bounding box out of reach of the shell's
+    // bounding sphere: no contact (cheap tests before any geometry;
+    // the box test drops the coplanar neighbours of the face in
+    // contact)
+    const scalar h = (xp - fc) & nOutOfDomain;
+    if (h <= -r || h >= r)
+    {
+        return;
+    }
+    if (magSqr(xp - bb.nearest(xp)) >= sqr(r))
+    {
+        return;
+    }
+
+    const ellipsoidContact::result c =
+        b.sphere
+      ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
+      : ellipsoidContact::ellipsoidPlane
+        (
+            shells_[b.shell], fc, -nOutOfDomain
+        );
+    if (!c.contact || c.overlap <= 0)
+    {
+        return;
+    }
+
+    // The contact belongs to this face if its plane point lies on the
+    // face (within round-off of the face size) (bounding box first:
+    // most coplanar neighbours fail it)
+    const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
+    if
+    (
+        cmptMin(c.x2 - bb.min()) < -tol
+     || cmptMax(c.x2 - bb.max()) > tol
+    )
+    {
+        return;
+    }
+    if (!box && f.nearestPoint(c.x2, pts).distance() > tol)
+    {
+        return;
+    }
+    for (const point& x : contactPoints)
+    {
+        if (magSqr(x - c.x2) < sqr(1e-6*r))
+        {
+            return;
+        }
+    }
+    contactPoints.append(c.x2);
+    ++nWallContacts_;
+
+    parcelType& p = *b.p;
+    if (recordContacts_)
+    {
+        contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false, -1});
+    }
+
+    const point xc = 0.5*(c.x1 + c.x2);
+    const vector vRel = pointVelocity(b.U, b.omega, xp, xc);
+    vector& xi =
+        p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
+
+    hertzPowers powers;
+    const vector F = contactForce
+    (
+        c, vRel, b.mass, normalMobility(b, xp, xc, c.n), pw_, xi, powers
+    );
+    const vector Mr =
+        pw_.muR > 0
+      ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), pw_)
+      : Zero;
+    if (b.deltaBl > 0 && c.overlap > 0.5*b.deltaBl)
+    {
+        checkBufferLayer
+        (
+            p, nullptr, c.overlap, b.deltaBl, vRel & c.n, b.mass,
+            c.reducedRadius
+        );
+    }
+    // The elastic torque of the change of R (see Description)
+    const scalar dUdR = hertzRadiusDerivative(c, pw_, powers);
+    force_[i] += F;
+    torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 {
     const polyMesh& mesh = this->owner().mesh();
@@ -1178,112 +1312,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
     // Contacts of one parcel (contact points on the walls) to keep
     // coplanar neighbour faces from counting one contact twice
     DynamicList<point> contactPoints;
-
-    // Parcel i against a wall face: its points, centre, unit normal out of
-    // the domain, area, bounding box and patch
-    auto wallFace =
-    [&]
-    (
-        const label i,
-        const face& f,
-        const pointField& pts,
-        const point& fc,
-        const vector& nOutOfDomain,
-        const scalar faceArea,
-        const boundBox& bb,
-        const bool box,
-        const label patchi
-    )
-    {
-        const contactBody& b = bodies_[i];
-        const point& xp = x_[i];
-        const scalar r = b.radius;
-
-        // The face's plane or its bounding box out of reach of the shell's
-        // bounding sphere: no contact (cheap tests before any geometry;
-        // the box test drops the coplanar neighbours of the face in
-        // contact)
-        const scalar h = (xp - fc) & nOutOfDomain;
-        if (h <= -r || h >= r)
-        {
-            return;
-        }
-        if (magSqr(xp - bb.nearest(xp)) >= sqr(r))
-        {
-            return;
-        }
-
-        const ellipsoidContact::result c =
-            b.sphere
-          ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
-          : ellipsoidContact::ellipsoidPlane
-            (
-                shells_[b.shell], fc, -nOutOfDomain
-            );
-        if (!c.contact || c.overlap <= 0)
-        {
-            return;
-        }
-
-        // The contact belongs to this face if its plane point lies on the
-        // face (within round-off of the face size) (bounding box first:
-        // most coplanar neighbours fail it)
-        const scalar tol = 1e-9*Foam::sqrt(faceArea) + SMALL*r;
-        if
-        (
-            cmptMin(c.x2 - bb.min()) < -tol
-         || cmptMax(c.x2 - bb.max()) > tol
-        )
-        {
-            return;
-        }
-        if (!box && f.nearestPoint(c.x2, pts).distance() > tol)
-        {
-            return;
-        }
-        for (const point& x : contactPoints)
-        {
-            if (magSqr(x - c.x2) < sqr(1e-6*r))
-            {
-                return;
-            }
-        }
-        contactPoints.append(c.x2);
-        ++nWallContacts_;
-
-        parcelType& p = *b.p;
-        if (recordContacts_)
-        {
-            contacts_.append({&p, nullptr, xp, xp, c, r, patchi, false, -1});
-        }
-
-        const point xc = 0.5*(c.x1 + c.x2);
-        const vector vRel = pointVelocity(b.U, b.omega, xp, xc);
-        vector& xi =
-            p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
-
-        hertzPowers powers;
-        const vector F = contactForce
-        (
-            c, vRel, b.mass, normalMobility(b, xp, xc, c.n), pw_, xi, powers
-        );
-        const vector Mr =
-            pw_.muR > 0
-          ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), pw_)
-          : Zero;
-        if (b.deltaBl > 0 && c.overlap > 0.5*b.deltaBl)
-        {
-            checkBufferLayer
-            (
-                p, nullptr, c.overlap, b.deltaBl, vRel & c.n, b.mass,
-                c.reducedRadius
-            );
-        }
-        // The elastic torque of the change of R (see Description)
-        const scalar dUdR = hertzRadiusDerivative(c, pw_, powers);
-        force_[i] += F;
-        torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
-    };
 
     // Parcels with wall faces in reach (all parcels when some have
     // referred wall faces: the faces across processors and cyclics are
@@ -1301,7 +1329,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             const label facei = wallFaces_[k];
             const vector& Sf = mesh.faceAreas()[facei];
             const scalar magSf = mag(Sf);
-            wallFace
+            wallFaceContact
             (
                 i,
                 mesh.faces()[facei],
@@ -1312,7 +1340,8 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 wallFaceBb_[facei - mesh.nInternalFaces()],
                 wallFaceIsBox_[facei - mesh.nInternalFaces()],
                 // The patch only for the listed contacts (a search)
-                recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1
+                recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1,
+                contactPoints
             );
         }
 
@@ -1322,7 +1351,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
                 const pointField& pts = rwf.points();
-                wallFace
+                wallFaceContact
                 (
                     i,
                     rwf,
@@ -1332,7 +1361,8 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                     rwf.mag(pts),
                     boundBox(pts, rwf, false),
                     false,
-                    rwf.patchIndex()
+                    rwf.patchIndex(),
+                    contactPoints
                 );
             }
         }

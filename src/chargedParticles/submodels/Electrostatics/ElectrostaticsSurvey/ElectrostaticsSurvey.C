@@ -74,24 +74,29 @@ void Foam::ElectrostaticsSurvey<CloudType>::readControls
 
 
 template<class CloudType>
-typename Foam::ElectrostaticsSurvey<CloudType>::sceneKind
-Foam::ElectrostaticsSurvey<CloudType>::classify()
+void Foam::ElectrostaticsSurvey<CloudType>::scanBoundary
+(
+    const boundBox& bb,
+    bool& isBox,
+    FixedList<label, 3>& axisBits,
+    bool& anyGrounded,
+    bool& anyCyclic,
+    bool& anyElectrode
+)
 {
-    const fvMesh& mesh = cloud_.mesh();
-    const boundBox bb(mesh.points(), true);
-    origin_ = bb.min();
-    L_ = bb.span();
-
     // Phi's boundary conditions: the case's (at the current time) or
     // meshPoisson's defaults
+    const fvMesh& mesh = cloud_.mesh();
     const wordList patchKinds(meshPoisson::patchKinds(mesh));
 
     // Per axis, the kinds of the boundary faces on its two planes (bits
     // 1 << faceKind); a face off the bounding box makes it no box
     const scalar tol = 1e-6*mag(L_);
-    bool isBox = true;
-    FixedList<label, 3> axisBits(0);
-    bool anyGrounded = false, anyCyclic = false, anyElectrode = false;
+    isBox = true;
+    axisBits = 0;
+    anyGrounded = false;
+    anyCyclic = false;
+    anyElectrode = false;
     anyWall_ = false;
 
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
@@ -157,6 +162,21 @@ Foam::ElectrostaticsSurvey<CloudType>::classify()
             axisBits[axis] |= (1 << label(kind));
         }
     }
+}
+
+
+template<class CloudType>
+typename Foam::ElectrostaticsSurvey<CloudType>::sceneKind
+Foam::ElectrostaticsSurvey<CloudType>::classify()
+{
+    const fvMesh& mesh = cloud_.mesh();
+    const boundBox bb(mesh.points(), true);
+    origin_ = bb.min();
+    L_ = bb.span();
+
+    bool isBox, anyGrounded, anyCyclic, anyElectrode;
+    FixedList<label, 3> axisBits;
+    scanBoundary(bb, isBox, axisBits, anyGrounded, anyCyclic, anyElectrode);
     reduce(isBox, andOp<bool>());
     reduce(anyGrounded, orOp<bool>());
     reduce(anyCyclic, orOp<bool>());

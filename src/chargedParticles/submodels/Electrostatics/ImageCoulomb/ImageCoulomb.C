@@ -10,32 +10,12 @@
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
+Foam::labelList Foam::ImageCoulomb<CloudType>::groundedPatches
 (
     const dictionary& coeffs,
-    const polyMesh& mesh
+    const polyBoundaryMesh& pbm
 )
 {
-    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
-
-    const scalar featureAngle =
-        coeffs.lookupOrDefault<scalar>("featureAngle", 30);
-    if (!(featureAngle > 0 && featureAngle < 90))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry featureAngle [deg] in " << coeffs.name().c_str()
-            << " is " << featureAngle << ": it must be in (0, 90)"
-            << exit(FatalIOError);
-    }
-    const scalar tol = coeffs.lookupOrDefault<scalar>("planeTolerance", 1e-6);
-    if (!(tol > 0 && tol < 1e-2))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry planeTolerance in " << coeffs.name().c_str()
-            << " is " << tol << ": it must be in (0, 1e-2)"
-            << exit(FatalIOError);
-    }
-
     // The grounded patches: the listed names / regexes (each must match a
     // non-coupled patch), else every wall patch
     DynamicList<label> ids;
@@ -100,6 +80,38 @@ Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
                 << exit(FatalIOError);
         }
     }
+    return labelList(ids);
+}
+
+
+template<class CloudType>
+Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
+(
+    const dictionary& coeffs,
+    const polyMesh& mesh
+)
+{
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+
+    const scalar featureAngle =
+        coeffs.lookupOrDefault<scalar>("featureAngle", 30);
+    if (!(featureAngle > 0 && featureAngle < 90))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry featureAngle [deg] in " << coeffs.name().c_str()
+            << " is " << featureAngle << ": it must be in (0, 90)"
+            << exit(FatalIOError);
+    }
+    const scalar tol = coeffs.lookupOrDefault<scalar>("planeTolerance", 1e-6);
+    if (!(tol > 0 && tol < 1e-2))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry planeTolerance in " << coeffs.name().c_str()
+            << " is " << tol << ": it must be in (0, 1e-2)"
+            << exit(FatalIOError);
+    }
+
+    const labelList ids(groundedPatches(coeffs, pbm));
 
     // Split each patch into planes: faces grouped by unit normal and
     // offset n.x. Neighbouring faces of different planes at less than

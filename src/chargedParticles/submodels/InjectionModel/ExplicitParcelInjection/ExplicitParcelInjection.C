@@ -156,6 +156,67 @@ Foam::quaternion Foam::ExplicitParcelInjection<CloudType>::readOrientation
 
 
 template<class CloudType>
+void Foam::ExplicitParcelInjection<CloudType>::readParcelSize
+(
+    const dictionary& pd,
+    const label i,
+    const scalar sizeMax
+)
+{
+    // Size: a sphere's diameter or an ellipsoid's semi-axes
+    semiAxes_[i] = Zero;
+    if (pd.readIfPresent("semiAxes", semiAxes_[i]))
+    {
+        if (pd.found("d"))
+        {
+            FatalIOErrorInFunction(pd)
+                << "Parcel " << i << " in "
+                << this->coeffDict().name().c_str()
+                << "/parcels gives both d and semiAxes: give one"
+                << exit(FatalIOError);
+        }
+        const vector& s = semiAxes_[i];
+        if
+        (
+            !inputLimits::finite(s)
+         || !(cmptMin(s) >= 0.5*inputLimits::sizeMin)
+         || !(cmptMax(s) <= sizeMax)
+         || !(cmptMax(s) <= inputLimits::aspectRatioMax*cmptMin(s))
+        )
+        {
+            FatalIOErrorInFunction(pd)
+                << "Entry semiAxes of parcel " << i << " in "
+                << this->coeffDict().name().c_str()
+                << "/parcels is out of range (" << s
+                << "): all must be finite and > 0, in ["
+                << 0.5*inputLimits::sizeMin << ", " << sizeMax
+                << "] m (0.5 nm to the diagonal of the mesh's bounding"
+                << " box), the longest at most "
+                << inputLimits::aspectRatioMax << " times the shortest"
+                << exit(FatalIOError);
+        }
+        d_[i] = 2*cbrt(s.x()*s.y()*s.z());
+    }
+    else if (pd.found("d"))
+    {
+        d_[i] = readParcelScalar
+        (
+            pd, i, "d", true, nullptr, inputLimits::sizeMin, sizeMax,
+            "m (1 nm to the diagonal of the mesh's bounding box)"
+        );
+    }
+    else
+    {
+        FatalIOErrorInFunction(pd)
+            << "Entry d of parcel " << i << " in "
+            << this->coeffDict().name().c_str() << "/parcels is missing:"
+            << " give the diameter d of a sphere or the semiAxes of an"
+            << " ellipsoid" << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
 void Foam::ExplicitParcelInjection<CloudType>::readParcels()
 {
     const PtrList<dictionary> parcels
@@ -188,10 +249,6 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
         meshBb.min() - vector::uniform(1e-6*sizeMax),
         meshBb.max() + vector::uniform(1e-6*sizeMax)
     );
-    const string sizeUnit
-    (
-        "m (1 nm to the diagonal of the mesh's bounding box)"
-    );
     const string densityUnit("kg/m3");
 
     forAll(parcels, i)
@@ -221,56 +278,7 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
             "the speed of light [m/s]"
         );
 
-        // Size: a sphere's diameter or an ellipsoid's semi-axes
-        semiAxes_[i] = Zero;
-        if (pd.readIfPresent("semiAxes", semiAxes_[i]))
-        {
-            if (pd.found("d"))
-            {
-                FatalIOErrorInFunction(pd)
-                    << "Parcel " << i << " in "
-                    << this->coeffDict().name().c_str()
-                    << "/parcels gives both d and semiAxes: give one"
-                    << exit(FatalIOError);
-            }
-            const vector& s = semiAxes_[i];
-            if
-            (
-                !inputLimits::finite(s)
-             || !(cmptMin(s) >= 0.5*inputLimits::sizeMin)
-             || !(cmptMax(s) <= sizeMax)
-             || !(cmptMax(s) <= inputLimits::aspectRatioMax*cmptMin(s))
-            )
-            {
-                FatalIOErrorInFunction(pd)
-                    << "Entry semiAxes of parcel " << i << " in "
-                    << this->coeffDict().name().c_str()
-                    << "/parcels is out of range (" << s
-                    << "): all must be finite and > 0, in ["
-                    << 0.5*inputLimits::sizeMin << ", " << sizeMax
-                    << "] m (0.5 nm to the diagonal of the mesh's bounding"
-                    << " box), the longest at most "
-                    << inputLimits::aspectRatioMax << " times the shortest"
-                    << exit(FatalIOError);
-            }
-            d_[i] = 2*cbrt(s.x()*s.y()*s.z());
-        }
-        else if (pd.found("d"))
-        {
-            d_[i] = readParcelScalar
-            (
-                pd, i, "d", true, nullptr, inputLimits::sizeMin, sizeMax,
-                sizeUnit
-            );
-        }
-        else
-        {
-            FatalIOErrorInFunction(pd)
-                << "Entry d of parcel " << i << " in "
-                << this->coeffDict().name().c_str() << "/parcels is missing:"
-                << " give the diameter d of a sphere or the semiAxes of an"
-                << " ellipsoid" << exit(FatalIOError);
-        }
+        readParcelSize(pd, i, sizeMax);
         orientation_[i] = readOrientation(pd, i);
 
         // Surface speed |omega| a below the speed of light

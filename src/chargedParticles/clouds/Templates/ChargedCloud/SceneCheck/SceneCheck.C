@@ -100,21 +100,10 @@ void Foam::SceneCheck<CloudType>::checkIfDue()
 
 
 template<class CloudType>
-Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
+void Foam::SceneCheck<CloudType>::gatherParcels(scene& s) const
 {
     typedef typename CloudType::parcelType parcelType;
     using namespace sceneCheckDetail;
-
-    const polyMesh& mesh = cloud_.mesh();
-    const auto& es = cloud_.electrostatics();
-    const word farType = es.type();
-    const word nearType = es.nearField().type();
-    const scalar epsMedium = es.mediumEpsilonR();
-    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
-    const scalar k = 1/(4*constant::mathematical::pi*eps0*epsMedium);
-
-    // A carrier gas can break down; vacuum (density 0) cannot
-    const bool gas = gMax(cloud_.rho().primitiveField()) > 0;
 
     // The parcels, on the master
     DynamicList<point> myX;
@@ -122,11 +111,11 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     DynamicList<symmTensor> mySinv;
     DynamicList<vector> myU;
     DynamicList<label> myOrigProc, myOrigId;
-    scalar volParticles = 0;
+    s.volParticles = 0;
     const scalarField& muc = cloud_.mu().primitiveField();
     for (const parcelType& p : cloud_)
     {
-        const vector& s = p.semiAxes();
+        const vector& a = p.semiAxes();
         const tensor R = p.orientation().R();
         myX.append(p.centre());
         myQ.append(p.q());
@@ -135,207 +124,211 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         myU.append(p.U());
         myOrigProc.append(p.origProc());
         myOrigId.append(p.origId());
-        myAMin.append(cmptMin(s));
-        myAMax.append(cmptMax(s));
-        myArea.append(ellipsoid::surfaceArea(s));
-        volParticles += p.nParticle()*p.mass()/p.rho();
+        myAMin.append(cmptMin(a));
+        myAMax.append(cmptMax(a));
+        myArea.append(ellipsoid::surfaceArea(a));
+        s.volParticles += p.nParticle()*p.mass()/p.rho();
         // Stokes response time of the volume-equivalent sphere
         const scalar mu = muc[p.cell()];
         if (mu > 0)
         {
-            const scalar dv = 2*Foam::cbrt(s.x()*s.y()*s.z());
+            const scalar dv = 2*Foam::cbrt(a.x()*a.y()*a.z());
             myTau.append(p.rho()*sqr(dv)/(18*mu));
         }
         // R diag(a^2, b^2, c^2) R^T: the support function's matrix
         const tensor S2
         (
-            sqr(s.x()), 0, 0,
-            0, sqr(s.y()), 0,
-            0, 0, sqr(s.z())
+            sqr(a.x()), 0, 0,
+            0, sqr(a.y()), 0,
+            0, 0, sqr(a.z())
         );
         mySinv.append(symm(R & S2 & R.T()));
     }
-    const List<point> x(gatherOnMaster<point>(myX));
-    const List<scalar> q(gatherOnMaster<scalar>(myQ));
-    const List<scalar> eps(gatherOnMaster<scalar>(myEps));
-    const List<scalar> m(gatherOnMaster<scalar>(myM));
-    const List<vector> U(gatherOnMaster<vector>(myU));
-    const List<scalar> aMin(gatherOnMaster<scalar>(myAMin));
-    const List<scalar> aMax(gatherOnMaster<scalar>(myAMax));
-    const List<scalar> area(gatherOnMaster<scalar>(myArea));
-    const List<symmTensor> Sinv(gatherOnMaster<symmTensor>(mySinv));
-    const List<scalar> tauDrag(gatherOnMaster<scalar>(myTau));
-    const List<label> origProc(gatherOnMaster<label>(myOrigProc));
-    const List<label> origId(gatherOnMaster<label>(myOrigId));
-    const label n = x.size();
+    s.x = gatherOnMaster<point>(myX);
+    s.q = gatherOnMaster<scalar>(myQ);
+    s.eps = gatherOnMaster<scalar>(myEps);
+    s.m = gatherOnMaster<scalar>(myM);
+    s.U = gatherOnMaster<vector>(myU);
+    s.aMin = gatherOnMaster<scalar>(myAMin);
+    s.aMax = gatherOnMaster<scalar>(myAMax);
+    s.area = gatherOnMaster<scalar>(myArea);
+    s.Sinv = gatherOnMaster<symmTensor>(mySinv);
+    s.tauDrag = gatherOnMaster<scalar>(myTau);
+    s.origProc = gatherOnMaster<label>(myOrigProc);
+    s.origId = gatherOnMaster<label>(myOrigId);
+    s.n = s.x.size();
+}
 
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::findWalls(scene& s) const
+{
     // Wall and cyclic patches, wall faces of this processor
-    wordList wallNames, cyclicNames;
-    DynamicList<label> wallFaces;
-    for (const polyPatch& pp : mesh.boundaryMesh())
+    for (const polyPatch& pp : cloud_.mesh().boundaryMesh())
     {
         if (isA<wallPolyPatch>(pp))
         {
-            wallNames.append(pp.name());
+            s.wallNames.append(pp.name());
             forAll(pp, i)
             {
-                wallFaces.append(pp.start() + i);
+                s.wallFaces.append(pp.start() + i);
             }
         }
         else if (isA<cyclicPolyPatch>(pp))
         {
-            cyclicNames.append(pp.name());
+            s.cyclicNames.append(pp.name());
         }
     }
-    const label nWallFaces = returnReduce(wallFaces.size(), sumOp<label>());
+    s.nWallFaces = returnReduce(s.wallFaces.size(), sumOp<label>());
+}
 
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::chargeStatistics(scene& s) const
+{
     // Charges, shapes, surface field, polarisability
-    label nCharged = 0, nPositive = 0, nNegative = 0, nPolarisable = 0;
-    scalar qMin = GREAT, qMax = -GREAT, qNet = 0, qAbsMean = 0, mMean = 0;
-    scalar Es = 0, aspectMin = GREAT, aspectMax = 0;
-    label iEs = -1, nAboveBreakdown = 0;
-    scalar epsMin = GREAT, epsMax = 0;
-    boundBox chargedBox;
-    boolList polarisable(n, false);
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    const label n = s.n;
+    s.polarisable.setSize(n);
+    s.polarisable = false;
     for (label i = 0; i < n; ++i)
     {
-        qMin = min(qMin, q[i]);
-        qMax = max(qMax, q[i]);
-        qNet += q[i];
-        qAbsMean += mag(q[i]);
-        mMean += m[i];
-        aspectMin = min(aspectMin, aMax[i]/aMin[i]);
-        aspectMax = max(aspectMax, aMax[i]/aMin[i]);
-        epsMin = min(epsMin, eps[i]);
-        epsMax = max(epsMax, eps[i]);
-        const scalar Esi = mag(q[i])/(eps0*area[i]);
-        if (Esi > Es)
+        const scalar qi = s.q[i];
+        s.qMin = min(s.qMin, qi);
+        s.qMax = max(s.qMax, qi);
+        s.qNet += qi;
+        s.qAbsMean += mag(qi);
+        s.mMean += s.m[i];
+        s.aspectMin = min(s.aspectMin, s.aMax[i]/s.aMin[i]);
+        s.aspectMax = max(s.aspectMax, s.aMax[i]/s.aMin[i]);
+        s.epsMin = min(s.epsMin, s.eps[i]);
+        s.epsMax = max(s.epsMax, s.eps[i]);
+        const scalar Esi = mag(qi)/(eps0*s.area[i]);
+        if (Esi > s.Es)
         {
-            Es = Esi;
-            iEs = i;
+            s.Es = Esi;
+            s.iEs = i;
         }
-        nAboveBreakdown += (Esi > breakdownField_);
-        if (q[i] != 0)
+        s.nAboveBreakdown += (Esi > breakdownField_);
+        if (qi != 0)
         {
-            ++nCharged;
-            (q[i] > 0 ? nPositive : nNegative)++;
-            chargedBox.add(x[i]);
+            ++s.nCharged;
+            (qi > 0 ? s.nPositive : s.nNegative)++;
+            s.chargedBox.add(s.x[i]);
         }
-        if (mag(eps[i] - epsMedium) > 1e-9*epsMedium)
+        if (mag(s.eps[i] - s.epsMedium) > 1e-9*s.epsMedium)
         {
-            polarisable[i] = true;
-            ++nPolarisable;
+            s.polarisable[i] = true;
+            ++s.nPolarisable;
         }
     }
     if (n > 0)
     {
-        qAbsMean /= n;
-        mMean /= n;
+        s.qAbsMean /= n;
+        s.mMean /= n;
     }
+}
 
-    // Surface gaps of the polarisable parcels (two smaller semi-axes)
-    const scalar gapRange = 2;
-    scalarField gaps;
-    label nClose2 = 0, nClose1Charged = 0;
-    if (Pstream::master() && nPolarisable > 0)
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::surfaceGaps(scene& s) const
+{
+    // Surface gaps of the polarisable parcels (gapRange smaller
+    // semi-axes)
+    if (Pstream::master() && s.nPolarisable > 0)
     {
-        gaps = sceneMeasures::nearestGaps
+        s.gaps = sceneMeasures::nearestGaps
         (
-            x, Sinv, aMin, aMax, polarisable, gapRange
+            s.x, s.Sinv, s.aMin, s.aMax, s.polarisable, s.gapRange
         );
-        forAll(gaps, i)
+        forAll(s.gaps, i)
         {
-            if (polarisable[i] && gaps[i] < gapRange)
+            if (s.polarisable[i] && s.gaps[i] < s.gapRange)
             {
-                ++nClose2;
-                if (gaps[i] < 1 && q[i] != 0)
+                ++s.nClose2;
+                if (s.gaps[i] < 1 && s.q[i] != 0)
                 {
-                    ++nClose1Charged;
+                    ++s.nClose1Charged;
                 }
             }
         }
     }
+}
 
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::wallDistances(scene& s) const
+{
     // Wall distances of a sample of the charged parcels (all parcels if
     // none is charged yet): the master picks it, every processor searches
     // its own wall faces, the minimum wins
     List<point> sample;
     if (Pstream::master())
     {
-        DynamicList<point> s;
-        const bool anyCharged = nCharged > 0;
-        const label nPool = anyCharged ? nCharged : n;
+        DynamicList<point> picked;
+        const bool anyCharged = s.nCharged > 0;
+        const label nPool = anyCharged ? s.nCharged : s.n;
         const label stride =
             max(label(1), nPool/2000 + (nPool % 2000 ? 1 : 0));
         label j = 0;
-        for (label i = 0; i < n; ++i)
+        for (label i = 0; i < s.n; ++i)
         {
-            if (!anyCharged || q[i] != 0)
+            if (!anyCharged || s.q[i] != 0)
             {
                 if (j++ % stride == 0)
                 {
-                    s.append(x[i]);
+                    picked.append(s.x[i]);
                 }
             }
         }
-        sample.transfer(s);
+        sample.transfer(picked);
     }
     Pstream::scatter(sample);
-    scalarField dWall(sceneMeasures::distanceToFaces(mesh, wallFaces, sample));
-    Pstream::listCombineGather(dWall, minEqOp<scalar>());
+    s.dWall =
+        sceneMeasures::distanceToFaces(cloud_.mesh(), s.wallFaces, sample);
+    Pstream::listCombineGather(s.dWall, minEqOp<scalar>());
+}
 
-    // Collective to the end: the collision model's sub-cycles (a
-    // reduction) and the domain volume, on every processor
-    const label nSub = max(label(1), cloud_.collision().nSubCycles());
-    const scalar vol = gSum(mesh.cellVolumes());
-    reduce(volParticles, sumOp<scalar>());
-    const auto* ec =
-        dynamic_cast<const typename CloudType::contactModelType*>
-        (
-            &cloud_.collision()
-        );
-    const scalar tHertz = ec ? ec->collisionTime() : GREAT;
-    // Electrical kinds of the patches (Phi's conditions or meshPoisson's
-    // defaults: what a mesh solve would take them for)
-    const wordList patchKinds(meshPoisson::patchKinds(cloud_.mesh()));
 
-    DynamicList<string> warnings;
-    if (!Pstream::master())
-    {
-        return warnings;
-    }
-
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::cloudSize(scene& s) const
+{
     // The cloud's size: the charged parcels' box (all parcels' if none is
     // charged yet); a single parcel has no partner (l infinite)
-    boundBox box(chargedBox);
-    if (nCharged == 0)
+    boundBox box(s.chargedBox);
+    if (s.nCharged == 0)
     {
-        for (const point& p : x)
+        for (const point& p : s.x)
         {
             box.add(p);
         }
     }
-    const label nSized = nCharged > 0 ? nCharged : n;
-    const scalar extent = nSized > 1 ? box.mag() : GREAT;
-    const scalar dWallMedian = sceneMeasures::percentile(dWall, 0.5);
-    const scalar imageEffect =
-        nWallFaces > 0 && dWallMedian < GREAT
-      ? sceneMeasures::imageEstimate(extent, dWallMedian)
+    const label nSized = s.nCharged > 0 ? s.nCharged : s.n;
+    s.extent = nSized > 1 ? box.mag() : GREAT;
+    s.dWallMedian = sceneMeasures::percentile(s.dWall, 0.5);
+    s.imageEffect =
+        s.nWallFaces > 0 && s.dWallMedian < GREAT
+      ? sceneMeasures::imageEstimate(s.extent, s.dWallMedian)
       : 0;
+}
 
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::coulombCollisionStep(scene& s) const
+{
     // Time step of the force evaluations and the Coulomb-collision step
     // of a mono-charged cloud (Eqs. 21-23 with the agitation of Eq. 25 or
     // the measured one, the larger)
-    const scalar deltaT = mesh.time().deltaTValue();
-    const scalar dtStep = deltaT/nSub;
-    scalar dtCoulomb = GREAT;
+    s.deltaT = cloud_.mesh().time().deltaTValue();
+    s.dtStep = s.deltaT/s.nSub;
     const bool monoCharged =
-        nCharged > 1 && (nPositive == 0 || nNegative == 0);
-    if (monoCharged && farType != "periodic")
+        s.nCharged > 1 && (s.nPositive == 0 || s.nNegative == 0);
+    if (monoCharged && s.farType != "periodic")
     {
+        const label n = s.n;
         scalar sumU2 = 0;
         vector sumU(Zero);
-        for (const vector& u : U)
+        for (const vector& u : s.U)
         {
             sumU += u;
             sumU2 += magSqr(u);
@@ -345,45 +338,39 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         const scalar qp2 = max
         (
             qp2Measured,
-            coulombCollision::agitationEstimate(k, qAbsMean, mMean, n/vol)
+            coulombCollision::agitationEstimate
+            (
+                s.k, s.qAbsMean, s.mMean, n/s.vol
+            )
         );
         // Charges below ~1e-160 C square to 0: no deflection to resolve
-        if (qp2 > 0 && k*sqr(qAbsMean) > 0)
+        if (qp2 > 0 && s.k*sqr(s.qAbsMean) > 0)
         {
-            dtCoulomb = coulombCollision::maxTimeStep
+            s.dtCoulomb = coulombCollision::maxTimeStep
             (
-                k, qAbsMean, qAbsMean, mMean, mMean, qp2
+                s.k, s.qAbsMean, s.qAbsMean, s.mMean, s.mMean, qp2
             );
         }
     }
+}
 
-    // Summary, with 4 significant digits (the run's precision is for
-    // fields)
-    const word tribo = cloud_.triboCharging().modelType();
-    const std::streamsize precision0 = Info().precision(4);
-    string walls, cyclics;
-    for (const word& w : wallNames)
-    {
-        const word& kind =
-            patchKinds[mesh.boundaryMesh().findPatchID(w)];
-        walls += (walls.empty() ? "" : ", ") + w + ": " + kind;
-    }
-    for (const word& w : cyclicNames)
-    {
-        cyclics += (cyclics.empty() ? "" : " ") + w;
-    }
-    const word cloudName = cloud_.name();
-    Info<< nl << "Scene check of " << cloudName << " at t = "
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::printParcels(const scene& s) const
+{
+    const polyMesh& mesh = cloud_.mesh();
+    const label n = s.n;
+    Info<< nl << "Scene check of " << cloud_.name() << " at t = "
         << mesh.time().timeName() << " s:" << nl
         << "    parcels            " << n << ", aspect ratio "
-        << aspectMin << " to " << aspectMax << ", volume fraction "
-        << volParticles/vol << ", spacing (V/N)^(1/3) "
-        << Foam::cbrt(vol/max(n, label(1))) << " m" << nl
-        << "    charges            " << nCharged << " charged (" << nPositive
-        << " positive), q from " << qMin << " to " << qMax << " C, net "
-        << qNet << " C" << nl
-        << "    surface field      largest q/(eps0 S) = " << Es << " V/m ";
-    if (gas)
+        << s.aspectMin << " to " << s.aspectMax << ", volume fraction "
+        << s.volParticles/s.vol << ", spacing (V/N)^(1/3) "
+        << Foam::cbrt(s.vol/max(n, label(1))) << " m" << nl
+        << "    charges            " << s.nCharged << " charged ("
+        << s.nPositive << " positive), q from " << s.qMin << " to "
+        << s.qMax << " C, net " << s.qNet << " C" << nl
+        << "    surface field      largest q/(eps0 S) = " << s.Es << " V/m ";
+    if (s.gas)
     {
         Info<< "(breakdownField " << breakdownField_ << " V/m)" << nl;
     }
@@ -392,40 +379,59 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         Info<< "(vacuum carrier: no breakdown)" << nl;
     }
     Info
-        << "    polarisable        " << nPolarisable << " (epsilonR "
-        << epsMin << " to " << epsMax << ", medium " << epsMedium << ")";
-    if (nPolarisable > 0)
+        << "    polarisable        " << s.nPolarisable << " (epsilonR "
+        << s.epsMin << " to " << s.epsMax << ", medium " << s.epsMedium
+        << ")";
+    if (s.nPolarisable > 0)
     {
         Info<< "; surface gap to the nearest parcel: ";
-        if (nClose2 > 0)
+        if (s.nClose2 > 0)
         {
-            DynamicList<scalar> close(nClose2);
-            for (const scalar g : gaps)
+            DynamicList<scalar> close(s.nClose2);
+            for (const scalar g : s.gaps)
             {
-                if (g < gapRange) close.append(g);
+                if (g < s.gapRange) close.append(g);
             }
-            Info<< "min " << min(gaps) << ", 5 % "
+            Info<< "min " << min(s.gaps) << ", 5 % "
                 << sceneMeasures::percentile(close, 0.05) << ", median "
                 << sceneMeasures::percentile(close, 0.5)
-                << " smaller semi-axes over the " << nClose2
-                << " parcels within " << gapRange;
+                << " smaller semi-axes over the " << s.nClose2
+                << " parcels within " << s.gapRange;
         }
         else
         {
-            Info<< "none within " << gapRange << " smaller semi-axes";
+            Info<< "none within " << s.gapRange << " smaller semi-axes";
         }
     }
-    Info<< nl << "    walls              ";
-    if (wallNames.empty())
+    Info<< nl;
+}
+
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::printWalls(const scene& s) const
+{
+    const polyMesh& mesh = cloud_.mesh();
+    string walls, cyclics;
+    for (const word& w : s.wallNames)
+    {
+        const word& kind = s.patchKinds[mesh.boundaryMesh().findPatchID(w)];
+        walls += (walls.empty() ? "" : ", ") + w + ": " + kind;
+    }
+    for (const word& w : s.cyclicNames)
+    {
+        cyclics += (cyclics.empty() ? "" : " ") + w;
+    }
+    Info<< "    walls              ";
+    if (s.wallNames.empty())
     {
         Info<< "none";
     }
     else
     {
-        Info<< walls.c_str() << " (" << nWallFaces << " faces)";
+        Info<< walls.c_str() << " (" << s.nWallFaces << " faces)";
     }
     Info<< "; cyclic: ";
-    if (cyclicNames.empty())
+    if (s.cyclicNames.empty())
     {
         Info<< "none";
     }
@@ -434,15 +440,15 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         Info<< cyclics.c_str();
     }
     Info<< nl;
-    if (nWallFaces > 0 && n > 0)
+    if (s.nWallFaces > 0 && s.n > 0)
     {
-        Info<< "    wall distance      median " << dWallMedian
-            << " m over " << dWall.size() << " parcels; ";
-        if (extent < GREAT)
+        Info<< "    wall distance      median " << s.dWallMedian
+            << " m over " << s.dWall.size() << " parcels; ";
+        if (s.extent < GREAT)
         {
-            Info<< "cloud size " << extent << " m: conducting walls would"
+            Info<< "cloud size " << s.extent << " m: conducting walls would"
                 << " change free-space forces by ~"
-                << label(100*imageEffect + 0.5) << " % ((size/(2 d))^2)";
+                << label(100*s.imageEffect + 0.5) << " % ((size/(2 d))^2)";
         }
         else
         {
@@ -450,33 +456,42 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
         }
         Info<< nl;
     }
-    Info<< "    models             electrostaticsModel " << farType
-        << ", nearField " << nearType << ", triboChargingModel "
+}
+
+
+template<class CloudType>
+void Foam::SceneCheck<CloudType>::printTimes(const scene& s) const
+{
+    const word tribo = cloud_.triboCharging().modelType();
+    Info<< "    models             electrostaticsModel " << s.farType
+        << ", nearField " << s.nearType << ", triboChargingModel "
         << (tribo.empty() ? word("none") : tribo) << ", collisionModel "
         << cloud_.collision().type() << nl
-        << "    time step          " << dtStep << " s (deltaT " << deltaT
-        << " s / " << nSub << ")";
-    if (dtCoulomb < GREAT)
+        << "    time step          " << s.dtStep << " s (deltaT "
+        << s.deltaT << " s / " << s.nSub << ")";
+    if (s.dtCoulomb < GREAT)
     {
-        Info<< "; Coulomb-collision step (Boutsikakis Eq. 23) " << dtCoulomb
-            << " s";
+        Info<< "; Coulomb-collision step (Boutsikakis Eq. 23) "
+            << s.dtCoulomb << " s";
     }
     Info<< nl << "    time scales        ";
-    if (tHertz < GREAT)
+    if (s.tHertz < GREAT)
     {
-        Info<< "Hertz collision " << tHertz << " s (fastest parcel); ";
+        Info<< "Hertz collision " << s.tHertz << " s (fastest parcel); ";
     }
-    if (nCharged > 0)
+    if (s.nCharged > 0)
     {
         // Plasma period 2 pi/omega_p, omega_p^2 = n <q^2>/(eps0 epsR <m>)
         scalar q2 = 0;
-        for (const scalar qi : q)
+        for (const scalar qi : s.q)
         {
             q2 += sqr(qi);
         }
-        q2 /= n;
+        q2 /= s.n;
         // Charges below ~1e-160 C square to 0: no period to give
-        const scalar omegaP2 = (n/vol)*q2/(eps0*epsMedium*mMean);
+        const scalar omegaP2 =
+            (s.n/s.vol)*q2
+           /(pairwiseCoulomb::vacuumPermittivity*s.epsMedium*s.mMean);
         if (omegaP2 > 0)
         {
             Info<< "plasma period "
@@ -484,50 +499,59 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
                 << " s; ";
         }
     }
-    if (tauDrag.size())
+    if (s.tauDrag.size())
     {
         Info<< "drag response (Stokes) median "
-            << sceneMeasures::percentile(tauDrag, 0.5) << " s";
+            << sceneMeasures::percentile(s.tauDrag, 0.5) << " s";
     }
     else
     {
         Info<< "no drag (carrier without viscosity)";
     }
     Info<< nl;
-    Info().precision(precision0);
+}
 
-    // Warnings: the entry to change and why
+
+template<class CloudType>
+Foam::DynamicList<Foam::string>
+Foam::SceneCheck<CloudType>::warningsFor(const scene& s) const
+{
+    // The entry to change and why
+    const auto& es = cloud_.electrostatics();
+    const word& farType = s.farType;
+    const word& nearType = s.nearType;
     const bool charging = cloud_.triboCharging().active();
     const bool applied = es.appliedField().valid();
+    DynamicList<string> warnings;
     if
     (
         (farType == "directCoulomb" || farType == "cutoffCoulomb")
-     && (nCharged > 0 || charging) && imageEffect > 0.05
+     && (s.nCharged > 0 || charging) && s.imageEffect > 0.05
     )
     {
         warnings.append
         (
             "electrostaticsModel " + farType + " sums charges in free space,"
             " but the walls are close to the charges (median distance "
-            + Foam::name(dWallMedian) + " m, cloud size "
-            + (extent < GREAT ? Foam::name(extent) : word("one parcel"))
+            + Foam::name(s.dWallMedian) + " m, cloud size "
+            + (s.extent < GREAT ? Foam::name(s.extent) : word("one parcel"))
             + " m): if the walls conduct (or are dielectric), their images"
             " change the forces by ~"
-            + Foam::name(label(100*imageEffect + 0.5)) + " %. Use"
+            + Foam::name(label(100*s.imageEffect + 0.5)) + " %. Use"
             " electrostaticsModel imageCoulomb (grounded planar walls) or"
             " meshPoisson (any walls, electrodes); boundaries that are open"
             " (no material) are patches of type patch, not wall."
         );
     }
-    if (nearType == "none" && nPolarisable > 0 && (nClose2 > 0 || applied))
+    if (nearType == "none" && s.nPolarisable > 0 && (s.nClose2 > 0 || applied))
     {
         warnings.append
         (
-            "nearField none: " + Foam::name(nPolarisable) + " polarisable"
-            " parcels (epsilonR != " + Foam::name(epsMedium) + ")"
+            "nearField none: " + Foam::name(s.nPolarisable) + " polarisable"
+            " parcels (epsilonR != " + Foam::name(s.epsMedium) + ")"
           + (
-                nClose2 > 0
-              ? ", " + Foam::name(nClose2) + " of them within two smaller"
+                s.nClose2 > 0
+              ? ", " + Foam::name(s.nClose2) + " of them within two smaller"
                 " semi-axes of a neighbour, where point charges miss the"
                 " induced forces (up to 4x, doc/polarisation.md)"
               : string("")
@@ -538,78 +562,133 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
             " (or type bem for close pairs)."
         );
     }
-    if (nearType == "inducedDipole" && nClose1Charged > 0)
+    if (nearType == "inducedDipole" && s.nClose1Charged > 0)
     {
         warnings.append
         (
-            "nearField inducedDipole: " + Foam::name(nClose1Charged)
+            "nearField inducedDipole: " + Foam::name(s.nClose1Charged)
           + " charged polarisable parcels within one smaller semi-axis of a"
             " neighbour, where the dipole rung's force is 13-80 % off the"
             " surface-resolved one (doc/polarisation.md). Set nearField"
             " { type bem; } to resolve them."
         );
     }
-    if (dtCoulomb < GREAT && dtStep > dtCoulomb)
+    if (s.dtCoulomb < GREAT && s.dtStep > s.dtCoulomb)
     {
         warnings.append
         (
-            "the force step " + Foam::name(dtStep) + " s exceeds the"
-            " Coulomb-collision step " + Foam::name(dtCoulomb) + " s of this"
+            "the force step " + Foam::name(s.dtStep) + " s exceeds the"
+            " Coulomb-collision step " + Foam::name(s.dtCoulomb) + " s of this"
             " mono-charged cloud (Boutsikakis 2023 Eq. 23): close encounters"
             " are under-resolved. Reduce deltaT in system/controlDict."
         );
     }
-    if (gas && Es > breakdownField_)
+    if (s.gas && s.Es > breakdownField_)
     {
         warnings.append
         (
-            "the largest surface field q/(eps0 S) = " + Foam::name(Es)
-          + " V/m, of parcel (origProc " + Foam::name(origProc[iEs])
-          + ", origId " + Foam::name(origId[iEs]) + ") at "
-          + Foam::name(x[iEs]) + " with q = " + Foam::name(q[iEs])
+            "the largest surface field q/(eps0 S) = " + Foam::name(s.Es)
+          + " V/m, of parcel (origProc " + Foam::name(s.origProc[s.iEs])
+          + ", origId " + Foam::name(s.origId[s.iEs]) + ") at "
+          + Foam::name(s.x[s.iEs]) + " with q = " + Foam::name(s.q[s.iEs])
           + " C, exceeds sceneCheck/breakdownField = "
           + Foam::name(breakdownField_) + " V/m ("
-          + Foam::name(nAboveBreakdown) + " parcel(s) above): the medium"
+          + Foam::name(s.nAboveBreakdown) + " parcel(s) above): the medium"
             " would discharge. Check the parcels' q (or"
             " constantProperties/q0)."
         );
     }
     if
     (
-        es.active() && nCharged == 0 && !charging
-     && (nPolarisable == 0 || !applied)
+        es.active() && s.nCharged == 0 && !charging
+     && (s.nPolarisable == 0 || !applied)
     )
     {
         warnings.append
         (
             "electrostaticsModel " + farType + " has nothing to compute: no"
             " parcel is charged, no contact charging"
-          + string(nPolarisable > 0 ? " and no applied field" : "")
+          + string(s.nPolarisable > 0 ? " and no applied field" : "")
           + ". Set electrostaticsModel none (no cost)."
         );
     }
-    else if (nearType != "none" && nPolarisable == 0)
+    else if (nearType != "none" && s.nPolarisable == 0)
     {
         warnings.append
         (
             "nearField " + nearType + " has no polarisable parcel (every"
-            " epsilonR equals the medium's " + Foam::name(epsMedium) + ")."
+            " epsilonR equals the medium's " + Foam::name(s.epsMedium) + ")."
             " Remove the nearField entry (no cost)."
         );
     }
 
-    for (const string& w : warnings)
+    return warnings;
+}
+
+
+template<class CloudType>
+Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
+{
+    const auto& es = cloud_.electrostatics();
+    scene s;
+    s.farType = es.type();
+    s.nearType = es.nearField().type();
+    s.epsMedium = es.mediumEpsilonR();
+    s.k =
+        1/(4*constant::mathematical::pi*pairwiseCoulomb::vacuumPermittivity
+          *s.epsMedium);
+    // A carrier gas can break down; vacuum (density 0) cannot
+    s.gas = gMax(cloud_.rho().primitiveField()) > 0;
+
+    gatherParcels(s);
+    findWalls(s);
+    chargeStatistics(s);
+    surfaceGaps(s);
+    wallDistances(s);
+
+    // Collective to the end: the collision model's sub-cycles (a
+    // reduction) and the domain volume, on every processor
+    s.nSub = max(label(1), cloud_.collision().nSubCycles());
+    s.vol = gSum(cloud_.mesh().cellVolumes());
+    reduce(s.volParticles, sumOp<scalar>());
+    const auto* ec =
+        dynamic_cast<const typename CloudType::contactModelType*>
+        (
+            &cloud_.collision()
+        );
+    s.tHertz = ec ? ec->collisionTime() : GREAT;
+    // Electrical kinds of the patches (Phi's conditions or meshPoisson's
+    // defaults: what a mesh solve would take them for)
+    s.patchKinds = meshPoisson::patchKinds(cloud_.mesh());
+
+    if (!Pstream::master())
+    {
+        return DynamicList<string>();
+    }
+    cloudSize(s);
+    coulombCollisionStep(s);
+
+    // Summary, with 4 significant digits (the run's precision is for
+    // fields)
+    const std::streamsize precision0 = Info().precision(4);
+    printParcels(s);
+    printWalls(s);
+    printTimes(s);
+    Info().precision(precision0);
+
+    DynamicList<string> warns(warningsFor(s));
+    for (const string& w : warns)
     {
         // Warning without the source location: the message names the entry
         Warning() << "Scene check: " << w.c_str() << nl << endl;
     }
-    if (warnings.empty())
+    if (warns.empty())
     {
         Info<< "    no warnings" << nl;
     }
     Info<< endl;
 
-    return warnings;
+    return warns;
 }
 
 

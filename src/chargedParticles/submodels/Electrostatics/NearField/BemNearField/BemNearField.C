@@ -767,39 +767,19 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
 
 
 template<class CloudType>
-void Foam::BemNearField<CloudType>::correct
+void Foam::BemNearField<CloudType>::gatherParcels
 (
-    const ElectrostaticsModel<CloudType>& farField
+    const scalar kappa0,
+    gatheredParcels& gp
 )
 {
-    using namespace bemNearFieldDetail;
-
-    CloudType& cloud = this->owner();
-    const scalar kappa0 = farField.mediumEpsilonR();
+    const CloudType& cloud = this->owner();
     const label n = cloud.size();
+    gp.kC =
+        1/(4*constant::mathematical::pi
+           *pairwiseCoulomb::vacuumPermittivity*kappa0);
 
-    if (cmptMax(farField.periodicBox()) > 0)
-    {
-        FatalIOErrorInFunction(this->dict())
-            << "nearField type bem in " << this->dict().name().c_str()
-            << " does not support periodic far fields yet"
-            << exit(FatalIOError);
-    }
-    if (!bem_)
-    {
-        bem_.reset(new bemSolver(kappa0, controls_));
-        shapeIndex_.clear();
-        shapeKeys_.clear();
-        shapeLastUse_.clear();
-    }
-    if (!stateRead_)
-    {
-        readState();
-    }
-    const bool writeTime = this->owner().db().time().writeTime();
-
-    // Geometry and charges of every parcel, on every processor, in one
-    // order
+    // Geometry and charges of this processor's parcels
     pointField myX(n);
     tensorField myR(n);
     vectorField myS(n);
@@ -821,8 +801,7 @@ void Foam::BemNearField<CloudType>::correct
     // Only the parcels in or near clusters enter the cluster solves: those
     // of every processor are gathered (each processor marks its own from
     // a halo), the others stay where they are
-    scalar dMax = 0;
-    const boolList needed(nearClusters(myX, myR, myS, myK, kappa0, dMax));
+    const boolList needed(nearClusters(myX, myR, myS, myK, kappa0, gp.dMax));
     DynamicList<label> sel;
     forAll(needed, k)
     {
@@ -831,53 +810,57 @@ void Foam::BemNearField<CloudType>::correct
             sel.append(k);
         }
     }
-    labelList selIds(2*sel.size());
-    forAll(sel, k)
+    gp.sel.transfer(sel);
+    labelList selIds(2*gp.sel.size());
+    forAll(gp.sel, k)
     {
-        selIds[2*k] = myId[2*sel[k]];
-        selIds[2*k + 1] = myId[2*sel[k] + 1];
+        selIds[2*k] = myId[2*gp.sel[k]];
+        selIds[2*k + 1] = myId[2*gp.sel[k] + 1];
     }
-    label myStart = 0, start = 0;
-    const pointField x
-    (
-        this->gatherAll(pointField(UIndirectList<point>(myX, sel)), myStart)
-    );
-    const tensorField R
-    (
-        this->gatherAll(tensorField(UIndirectList<tensor>(myR, sel)), start)
-    );
-    const vectorField S
-    (
-        this->gatherAll(vectorField(UIndirectList<vector>(myS, sel)), start)
-    );
-    const scalarField q
-    (
-        this->gatherAll(scalarField(UIndirectList<scalar>(myQ, sel)), start)
-    );
-    const scalarField K
-    (
-        this->gatherAll(scalarField(UIndirectList<scalar>(myK, sel)), start)
-    );
-    const labelList ids(this->gatherAll(selIds, start));
-    stats_.nGathered = x.size();
+    label start = 0;
+    gp.x = this->gatherAll(gp.own(myX), gp.myStart);
+    gp.R = this->gatherAll(gp.own(myR), start);
+    gp.S = this->gatherAll(gp.own(myS), start);
+    gp.q = this->gatherAll(gp.own(myQ), start);
+    gp.K = this->gatherAll(gp.own(myK), start);
+    gp.ids = this->gatherAll(selIds, start);
+    stats_.nGathered = gp.x.size();
     stats_.nParcels = returnReduce(n, sumOp<label>());
-    // Each own parcel's index in the gathered lists (-1: not gathered)
-    labelList gathered(n, -1);
-    forAll(sel, k)
+    gp.gathered.setSize(n);
+    gp.gathered = -1;
+    forAll(gp.sel, k)
     {
-        gathered[sel[k]] = myStart + k;
+        gp.gathered[gp.sel[k]] = gp.myStart + k;
     }
-    const label N = x.size();
-    const labelList order(this->idOrder(ids));
+    gp.order = this->idOrder(gp.ids);
+    gp.rank.setSize(gp.x.size());
+    forAll(gp.order, k)
+    {
+        gp.rank[gp.order[k]] = k;
+    }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::formClusters
+(
+    const gatheredParcels& gp,
+    const scalar kappa0,
+    clusterSet& cs
+) const
+{
+    using namespace bemNearFieldDetail;
+
+    const label N = gp.x.size();
+    const pointField& x = gp.x;
+    const tensorField& R = gp.R;
+    const vectorField& S = gp.S;
+    const scalarField& K = gp.K;
+    const labelList& rank = gp.rank;
 
     // Close pairs (centre-line gap below the threshold), clusters by
     // union-find over the sorted order (so that roots do not depend on
     // the decomposition)
-    labelList rank(N);
-    forAll(order, k)
-    {
-        rank[order[k]] = k;
-    }
     scalar rCut = 0;
     for (label k = 0; k < N; ++k)
     {
@@ -885,8 +868,12 @@ void Foam::BemNearField<CloudType>::correct
     }
     labelList parent(identity(N));
     // Nearest linked neighbour of each parcel and its gap
-    labelList nearest(N, -1);
-    scalarField nearestGap(N, GREAT);
+    labelList& nearest = cs.nearest;
+    scalarField& nearestGap = cs.nearestGap;
+    nearest.setSize(N);
+    nearest = -1;
+    nearestGap.setSize(N);
+    nearestGap = GREAT;
     if (N > 1 && rCut > 0)
     {
         forPairsWithinCutoff
@@ -920,40 +907,42 @@ void Foam::BemNearField<CloudType>::correct
         );
     }
 
-    // Clusters: members (gathered indices) in sorted order, by root
-    std::map<label, DynamicList<label>> clusters;
+    // Clusters: members (gathered indices) in sorted order, by root,
+    // numbered in their sorted order; the cluster of each gathered parcel
+    // (-1: none)
+    std::map<label, DynamicList<label>> byRoot;
     for (label k = 0; k < N; ++k)
     {
-        const label g = order[k];
+        const label g = gp.order[k];
         if (nearest[g] >= 0)
         {
-            clusters[root(parent, k)].append(g);
+            byRoot[root(parent, k)].append(g);
         }
     }
-
-    typename InducedDipoleNearField<CloudType>::parcelIdSet members;
-    for (const auto& c : clusters)
+    cs.members.clear();
+    cs.clusters.setSize(byRoot.size());
+    cs.clusterOf.setSize(N);
+    cs.clusterOf = -1;
+    label c = 0;
+    for (auto& entry : byRoot)
     {
-        for (const label g : c.second)
+        for (const label g : entry.second)
         {
-            members.insert(labelPair(ids[2*g], ids[2*g + 1]));
+            cs.members.insert(gp.id(g));
+            cs.clusterOf[g] = c;
         }
+        cs.clusters[c++].transfer(entry.second);
     }
+}
 
-    // Clusters numbered in their sorted order; the cluster of each
-    // gathered parcel (-1: none)
-    std::vector<const DynamicList<label>*> clusterList;
-    labelList clusterOf(N, -1);
-    for (const auto& c : clusters)
-    {
-        for (const label g : c.second)
-        {
-            clusterOf[g] = clusterList.size();
-        }
-        clusterList.push_back(&c.second);
-    }
-    const label nC = clusterList.size();
 
+template<class CloudType>
+void Foam::BemNearField<CloudType>::setNeighbourMultipoles
+(
+    const gatheredParcels& gp,
+    clusterSet& cs
+)
+{
     // Parcels near each cluster (centre within the near-field radius of a
     // member's) and what they see of each other beyond point charges, as
     // multipoles (pointMultipole): a member of another cluster its charge
@@ -963,97 +952,749 @@ void Foam::BemNearField<CloudType>::correct
     // others get the reaction (Newton's third law between the patch
     // charges and the multipole) and see the members' dipoles and
     // quadrupoles in their dipole solve.
-    const scalar kC =
-        1/(4*constant::mathematical::pi
-           *pairwiseCoulomb::vacuumPermittivity*kappa0);
-    std::vector<std::vector<label>> neighbours(nC);
-    List<pointMultipole> multipoles(N);
-    // The free charge's quadrupole (uniform over the surface)
-    symmTensorField Qfree(N, Zero);
-    vectorField Emembers(N, Zero);
-    if (multipoleNeighbours_ && nC)
+    const label N = gp.x.size();
+    const label nC = cs.clusters.size();
+    const pointField& x = gp.x;
+    const tensorField& R = gp.R;
+    const labelList& clusterOf = cs.clusterOf;
+    cs.neighbours.assign(nC, std::vector<label>());
+    cs.multipoles.setSize(N);
+    cs.Qfree.setSize(N);
+    cs.Qfree = Zero;
+    if (!multipoleNeighbours_ || !nC)
     {
-        std::vector<std::set<label>> near(nC);
-        forPairsWithinCutoff
-        (
-            x, x, this->rNearFor(dMax), 0,
-            [&](const label a, const label b, const vector&, const scalar)
+        return;
+    }
+    std::vector<std::set<label>> near(nC);
+    forPairsWithinCutoff
+    (
+        x, x, this->rNearFor(gp.dMax), 0,
+        [&](const label a, const label b, const vector&, const scalar)
+        {
+            if (a < b && clusterOf[a] != clusterOf[b])
             {
-                if (a < b && clusterOf[a] != clusterOf[b])
+                if (clusterOf[a] >= 0)
                 {
-                    if (clusterOf[a] >= 0)
-                    {
-                        near[clusterOf[a]].insert(rank[b]);
-                    }
-                    if (clusterOf[b] >= 0)
-                    {
-                        near[clusterOf[b]].insert(rank[a]);
-                    }
+                    near[clusterOf[a]].insert(gp.rank[b]);
+                }
+                if (clusterOf[b] >= 0)
+                {
+                    near[clusterOf[b]].insert(gp.rank[a]);
                 }
             }
-        );
-        for (label c = 0; c < nC; ++c)
-        {
-            for (const label r : near[c])
-            {
-                neighbours[c].push_back(order[r]);
-            }
         }
-        forAll(multipoles, g)
+    );
+    for (label c = 0; c < nC; ++c)
+    {
+        for (const label r : near[c])
         {
-            pointMultipole& m = multipoles[g];
-            m.x0 = x[g];
-            m.q = q[g];
-            Qfree[g] = q[g]*transform(R[g], unitQuadrupole(S[g]));
-            const auto last =
-                clusterOf[g] < 0
-              ? lastMoments_.end()
-              : lastMoments_.find(labelPair(ids[2*g], ids[2*g + 1]));
-            if (last != lastMoments_.end())
-            {
-                m.p = R[g] & last->second.first;
-                m.Q = transform(R[g], last->second.second);
-            }
-            else
-            {
-                m.Q = Qfree[g];
-            }
+            cs.neighbours[c].push_back(gp.order[r]);
         }
+    }
+    forAll(cs.multipoles, g)
+    {
+        pointMultipole& m = cs.multipoles[g];
+        m.x0 = x[g];
+        m.q = gp.q[g];
+        cs.Qfree[g] = gp.q[g]*transform(R[g], unitQuadrupole(gp.S[g]));
+        const auto last =
+            clusterOf[g] < 0
+          ? lastMoments_.end()
+          : lastMoments_.find(gp.id(g));
+        if (last != lastMoments_.end())
+        {
+            m.p = R[g] & last->second.first;
+            m.Q = transform(R[g], last->second.second);
+        }
+        else
+        {
+            m.Q = cs.Qfree[g];
+        }
+    }
 
-        // The members' dipoles and quadrupoles at the other parcels near
-        // their clusters (their charges are the far field's)
-        for (label c = 0; c < nC; ++c)
+    // The members' dipoles and quadrupoles at the other parcels near
+    // their clusters (their charges are the far field's)
+    const scalar kC = gp.kC;
+    vectorField Emembers(N, Zero);
+    for (label c = 0; c < nC; ++c)
+    {
+        for (const label j : cs.neighbours[c])
         {
-            for (const label j : neighbours[c])
+            if (clusterOf[j] < 0)
             {
-                if (clusterOf[j] < 0)
+                for (const label h : cs.clusters[c])
                 {
-                    for (const label h : *clusterList[c])
-                    {
-                        pointMultipole m(multipoles[h]);
-                        m.q = 0;
-                        Emembers[j] += kC*m.fieldOverK(x[j]);
-                    }
+                    pointMultipole m(cs.multipoles[h]);
+                    m.q = 0;
+                    Emembers[j] += kC*m.fieldOverK(x[j]);
                 }
-            }
-        }
-        i = 0;
-        for (auto& p : cloud)
-        {
-            const label g = gathered[i++];
-            if (g >= 0)
-            {
-                p.E() += Emembers[g];
             }
         }
     }
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        const label g = gp.gathered[i++];
+        if (g >= 0)
+        {
+            p.E() += Emembers[g];
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::memberMeshes
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const labelUList& mem,
+    const boundChargeMap& known,
+    labelList& shapes,
+    tensorField& poses
+)
+{
+    using namespace bemNearFieldDetail;
+
+    const pointField& x = gp.x;
+    const tensorField& R = gp.R;
+    const vectorField& S = gp.S;
+    shapes.setSize(mem.size());
+    poses.setSize(mem.size());
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        const label nb = cs.nearest[g];
+        const vector u = (x[nb] - x[g])/mag(x[nb] - x[g]);
+        const scalar aMin = min(cmptMin(S[g]), cmptMin(S[nb]));
+        // Grading towards the neighbour, measured against the exact
+        // two-sphere force (radii 1:1, 1:2, 1:5, epsilonR 2-1000,
+        // gaps 0.05-0.5 a): lambda = (0.5 + 0.5 rho^2) sqrt(g/a),
+        // rho = a/a_other <= 1 the size ratio of the pair, in
+        // [0.1, 1] and rounded down to a power of 2^(-1/4) (meshes
+        // reused); patches in proportion to the member's size over
+        // the pair's smaller (its gap region is ~sqrt(g a) wide), at
+        // most the largest block the preconditioner factorises
+        const scalar rho = aMin/max(cmptMin(S[g]), cmptMin(S[nb]));
+        const scalar lam0 = min
+        (
+            max
+            (
+                (0.5 + 0.5*sqr(rho))
+               *Foam::sqrt(max(cs.nearestGap[g], scalar(0))/aMin),
+                0.1
+            ),
+            1.0
+        );
+        const scalar lambda = Foam::pow
+        (
+            2.0,
+            -0.25*std::ceil(-4*Foam::log(lam0)/Foam::log(2.0) - 1e-9)
+        );
+        const label nP = min
+        (
+            label(std::round(nPatches_*cmptMin(S[g])/aMin)),
+            max(nPatches_, controls_.maxPreconditionerPatches)
+        );
+        const bool sphere = cmptMin(S[g]) == cmptMax(S[g]);
+        // Hysteresis: a member keeps its last mesh while that is at
+        // most one grading level finer than its gap asks for and (an
+        // ellipsoid) graded within 0.3 rad of the neighbour's
+        // direction (the 64 directions are ~0.45 rad apart), so that
+        // a gap or a direction oscillating about a level's edge does
+        // not remesh (and re-solve) every step
+        const auto last = known.find(gp.id(g));
+        bool keep = false;
+        if (last != known.end())
+        {
+            const meshKey& k = last->second.first;
+            keep =
+                k[0] == S[g].x() && k[1] == S[g].y() && k[2] == S[g].z()
+             && k[5] == nP
+             && k[4] <= lambda*(1 + 1e-9)
+             && lambda <= k[4]*Foam::pow(2.0, 0.25)*(1 + 1e-9);
+            if (keep && !sphere && k[3] >= 0)
+            {
+                const vector dir = fibonacciDirection
+                (
+                    std::lround(k[3]), nFocusDirections
+                );
+                keep = (dir & (R[g].T() & u)) > Foam::cos(0.3);
+            }
+        }
+        shapes[m] =
+            keep
+          ? shapeOf(last->second.first)
+          : sphere
+          ? shapeFor(S[g], vector(1, 0, 0), lambda, nP)
+          : shapeFor(S[g], R[g].T() & u, lambda, nP);
+        poses[m] = sphere ? rotationFromX(u) : R[g];
+        selfEnergy(shapes[m], gp.K[g]);
+    }
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::BemNearField<CloudType>::externalFields
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const label clusterI,
+    const vectorField& E,
+    const scalar rDipole2,
+    const ElectrostaticsModel<CloudType>& farField,
+    vectorField& Eext
+) const
+{
+    // External field of each member: everything but the cluster's own
+    // charges; the far field's energy of the pairs inside, q_i
+    // E_q,j.r_ij (a Coulomb pair), is taken out of the books as well
+    // (returned)
+    const labelUList& mem = cs.clusters[clusterI];
+    const pointField& x = gp.x;
+    const scalarField& q = gp.q;
+    Eext.setSize(mem.size());
+    scalar Uout = 0;
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        Eext[m] = E[g];
+        for (const label h : mem)
+        {
+            if (h != g)
+            {
+                const vector Eh = farField.pointChargeField(x[g], x[h], q[h]);
+                Eext[m] -= Eh;
+                Uout += 0.5*q[g]*(Eh & (x[g] - x[h]));
+            }
+        }
+    }
+
+    // The parcels near the cluster are seen as multipoles at the patches,
+    // in place of what E holds of them at the centres (the far field's
+    // point charge, the dipole solve's dipole field)
+    const scalar kC = gp.kC;
+    for (const label j : cs.neighbours[clusterI])
+    {
+        forAll(mem, m)
+        {
+            const label g = mem[m];
+            Eext[m] -= farField.pointChargeField(x[g], x[j], q[j]);
+            if (cs.clusterOf[j] < 0 && magSqr(x[g] - x[j]) < rDipole2)
+            {
+                pointMultipole d;
+                d.x0 = x[j];
+                d.p = cs.multipoles[j].p;
+                Eext[m] -= kC*d.fieldOverK(x[g]);
+            }
+        }
+    }
+    return Uout;
+}
+
+
+template<class CloudType>
+Foam::label Foam::BemNearField<CloudType>::setUpCluster
+(
+    const gatheredParcels& gp,
+    const labelUList& mem,
+    const labelList& meshes,
+    const tensorField& poses,
+    const vectorField& Eext,
+    const boundChargeMap& known,
+    const bemSolver::fieldFunction& Enear
+)
+{
+    // The cluster on the given meshes, GMRES started from each member's
+    // last bound charge on the same mesh; returns how many members have
+    // one
+    bem_->clearParticles();
+    bem_->setExternalField(Enear);
+    label carried = 0;
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        const label k =
+            bem_->addParticle(meshes[m], gp.x[g], poses[m], gp.K[g], gp.q[g]);
+        bem_->setParticleField(k, Eext[m]);
+        const auto last = known.find(gp.id(g));
+        if (last != known.end() && last->second.first == shapeKeys_[meshes[m]])
+        {
+            bem_->setInitialGuess(k, last->second.second);
+            ++carried;
+        }
+    }
+    return carried;
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::runCluster
+(
+    const label nMembers,
+    const bool solve
+)
+{
+    const bemSolver::solveInfo& info = solve ? bem_->solve() : bem_->evaluate();
+    stats_.nSolved += solve;
+    if (!info.converged)
+    {
+        FatalErrorInFunction
+            << "BEM cluster of " << nMembers << " parcels not"
+            << " converged: relative residual " << info.residual
+            << " after " << info.iterations << " GMRES iterations ("
+            << this->dict().name().c_str() << "/solver: tolerance "
+            << controls_.tolerance << ", maxIter " << controls_.maxIter
+            << ")" << exit(FatalError);
+    }
+    stats_.gmresIterations += info.iterations;
+    setupTime_ += info.setupTime;
+    stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
+}
+
+
+template<class CloudType>
+Foam::List<Foam::scalarField>
+Foam::BemNearField<CloudType>::memberCharges(const label nMembers) const
+{
+    List<scalarField> c(nMembers);
+    forAll(c, m)
+    {
+        c[m] = bem_->mediumCharges(m);
+    }
+    return c;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::BemNearField<CloudType>::clusterEnergy
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const label clusterI,
+    const labelList& meshes,
+    const vectorField& Eext,
+    const scalar Uout
+) const
+{
+    // Energy (Eq. 51) beyond the far field's, of the last solve: the
+    // cluster's minus its members alone minus the far field's internal
+    // pairs, and the bound charge in the external field, -1/2 p_b.E_ext
+    const labelUList& mem = cs.clusters[clusterI];
+    const pointField& x = gp.x;
+    const scalarField& q = gp.q;
+    scalar U = bem_->energy() - Uout;
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        U -= sqr(q[g])*selfEnergy_.at(std::make_pair(meshes[m], gp.K[g]));
+        U -= 0.5*(bem_->boundDipole(m) & Eext[m]);
+    }
+    // The neighbours (linear media: 1/2 sum of free charge x potential,
+    // Jackson, Classical Electrodynamics, Sec. 4.7): with f the free and
+    // b the bound charges, U(fA, fj) + 1/2 U(fA, bj) + 1/2 U(bA, fj),
+    // less the far field's point-charge pairs. An isolated parcel's
+    // dipole has its 1/2 U(bj, A) in the dipole solve's energy; a pair of
+    // clusters is counted half from each side
+    const scalar kC = gp.kC;
+    const List<scalarField> cMem(memberCharges(mem.size()));
+    for (const label j : cs.neighbours[clusterI])
+    {
+        const bool member = cs.clusterOf[j] >= 0;
+        const scalar w = member ? 0.5 : 1;
+        pointMultipole fj, bj;
+        fj.x0 = bj.x0 = x[j];
+        fj.q = q[j];
+        fj.Q = cs.Qfree[j];
+        if (member)
+        {
+            bj.p = cs.multipoles[j].p;
+            bj.Q = cs.multipoles[j].Q - cs.Qfree[j];
+        }
+        forAll(mem, m)
+        {
+            const scalarField& a = bem_->mesh(meshes[m]).areas();
+            const scalarField& sf = bem_->sigmaF(m);
+            const scalarField& c = cMem[m];
+            const SubList<point> y(bem_->centres(m));
+            scalar Um = 0;
+            forAll(c, k)
+            {
+                const scalar f = a[k]*sf[k];
+                const scalar phiF = fj.potentialOverK(y[k]);
+                Um += f*phiF + 0.5*(c[k] - f)*phiF;
+                if (member)
+                {
+                    Um += 0.5*f*bj.potentialOverK(y[k]);
+                }
+            }
+            const label h = mem[m];
+            U += w*kC*(Um - q[h]*q[j]/mag(x[h] - x[j]));
+            if (!member)
+            {
+                // The dipole solve's -1/2 p_j . E holds the member's
+                // bound moments too (they induce p_j), but the energy
+                // has no bound-bound term
+                pointMultipole bh(cs.multipoles[h]);
+                bh.q = 0;
+                bh.Q -= cs.Qfree[h];
+                U += 0.5*kC*(cs.multipoles[j].p & bh.fieldOverK(x[j]));
+            }
+        }
+    }
+    return U;
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::addReactions
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const label clusterI,
+    const scalar rDipole2,
+    const ElectrostaticsModel<CloudType>& farField,
+    clusterResults& res
+) const
+{
+    // Reaction on the other parcels near the cluster: minus the force and
+    // moment of their multipoles on the members' patch charges, in place
+    // of the far field's point-charge pair force, the dipole solve's
+    // dipole-charge pair force and the torque p x E of what their E holds
+    // of the members
+    const labelUList& mem = cs.clusters[clusterI];
+    const pointField& x = gp.x;
+    const scalarField& q = gp.q;
+    const scalar kC = gp.kC;
+    const List<scalarField> cMem(memberCharges(mem.size()));
+    for (const label j : cs.neighbours[clusterI])
+    {
+        if (cs.clusterOf[j] >= 0)
+        {
+            continue;
+        }
+        const pointMultipole& mj = cs.multipoles[j];
+        forAll(mem, m)
+        {
+            const scalarField& c = cMem[m];
+            const SubList<point> y(bem_->centres(m));
+            forAll(c, k)
+            {
+                const vector f = (kC*c[k])*mj.fieldOverK(y[k]);
+                res.Fout[j] -= f;
+                res.Mout[j] -= (y[k] - x[j]) ^ f;
+            }
+            const label h = mem[m];
+            const vector Eq = farField.pointChargeField(x[j], x[h], q[h]);
+            res.Fout[j] -= q[j]*Eq;
+            const vector r = x[j] - x[h];
+            const scalar r2 = magSqr(r);
+            if (r2 < rDipole2)
+            {
+                const scalar ir3 = 1/(r2*Foam::sqrt(r2));
+                res.Fout[j] -=
+                    mj.p & ((kC*q[h]*ir3)*(symmTensor::I - 3*sqr(r)/r2));
+            }
+            pointMultipole mh(cs.multipoles[h]);
+            mh.q = 0;
+            res.Mout[j] -= mj.p ^ (Eq + kC*mh.fieldOverK(x[j]));
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::solveCluster
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const label clusterI,
+    const boundChargeMap& known,
+    const vectorField& E,
+    const scalar rDipole2,
+    const bool solveNow,
+    const ElectrostaticsModel<CloudType>& farField,
+    clusterResults& res
+)
+{
+    const labelUList& mem = cs.clusters[clusterI];
+    labelList shapes;
+    tensorField poses;
+    memberMeshes(gp, cs, mem, known, shapes, poses);
+    vectorField Eext;
+    const scalar Uout =
+        externalFields(gp, cs, clusterI, E, rDipole2, farField, Eext);
+
+    // The neighbours' multipoles at the patches
+    std::vector<pointMultipole> sources;
+    for (const label j : cs.neighbours[clusterI])
+    {
+        sources.push_back(cs.multipoles[j]);
+    }
+    const scalar kC = gp.kC;
+    const bemSolver::fieldFunction Enear =
+        sources.empty()
+      ? bemSolver::fieldFunction()
+      : [&sources, kC](const point& y)
+        {
+            vector E(Zero);
+            for (const pointMultipole& s : sources)
+            {
+                E += s.fieldOverK(y);
+            }
+            return vector(kC*E);
+        };
+
+    // Members whose mesh changed since the last step: the energy on the
+    // old meshes at this configuration too, so that the books carry the
+    // difference across the mesh change (a discretisation jump, not work
+    // of the forces)
+    labelList oldShapes(shapes);
+    bool remeshed = false;
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        const auto last = known.find(gp.id(g));
+        if (last != known.end() && last->second.first != shapeKeys_[shapes[m]])
+        {
+            oldShapes[m] = shapeOf(last->second.first);
+            selfEnergy(oldShapes[m], gp.K[g]);
+            remeshed = true;
+        }
+    }
+    if (remeshed)
+    {
+        setUpCluster(gp, mem, oldShapes, poses, Eext, known, Enear);
+        runCluster(mem.size(), true);
+        res.remeshDelta += clusterEnergy(gp, cs, clusterI, oldShapes, Eext, Uout);
+    }
+
+    // Between solves (solveInterval) the bound charge is carried in the
+    // members' body frames, when every member has one on its mesh
+    const label carried =
+        setUpCluster(gp, mem, shapes, poses, Eext, known, Enear);
+    runCluster(mem.size(), solveNow || carried < mem.size());
+    const scalar U = clusterEnergy(gp, cs, clusterI, shapes, Eext, Uout);
+    if (remeshed)
+    {
+        res.remeshDelta -= U;
+    }
+    forAll(mem, m)
+    {
+        const label g = mem[m];
+        res.F[g] = bem_->forces()[m];
+        res.M[g] = bem_->torques()[m];
+        res.P[g] = bem_->boundDipole(m);
+        const pointMultipole mm(bem_->multipole(m));
+        const tensor& Rg = gp.R[g];
+        res.moments.emplace
+        (
+            gp.id(g),
+            bodyMoments(Rg.T() & mm.p, transform(Rg.T(), mm.Q))
+        );
+        res.sigmaB.emplace
+        (
+            gp.id(g),
+            std::make_pair(shapeKeys_[shapes[m]], scalarField(bem_->sigmaB(m)))
+        );
+    }
+    stats_.energy += U;
+    addReactions(gp, cs, clusterI, rDipole2, farField, res);
+}
+
+
+template<class CloudType>
+Foam::vectorField Foam::BemNearField<CloudType>::gatherFields
+(
+    const gatheredParcels& gp,
+    clusterSet& cs
+) const
+{
+    // The field at every centre after the far field, applied field and
+    // isolated dipoles; the isolated parcels' induced dipoles into their
+    // multipoles
+    const CloudType& cloud = this->owner();
+    label start = 0;
+    vectorField myE(cloud.size());
+    label i = 0;
+    for (const auto& p : cloud)
+    {
+        myE[i++] = p.E();
+    }
+    vectorField E(this->gatherAll(gp.own(myE), start));
+    if (multipoleNeighbours_)
+    {
+        i = 0;
+        for (const auto& p : cloud)
+        {
+            myE[i++] = p.dipole();
+        }
+        const vectorField Pd(this->gatherAll(gp.own(myE), start));
+        forAll(cs.multipoles, g)
+        {
+            if (cs.clusterOf[g] < 0)
+            {
+                cs.multipoles[g].p = Pd[g];
+            }
+        }
+    }
+    return E;
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::solveClusters
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const vectorField& E,
+    const ElectrostaticsModel<CloudType>& farField,
+    clusterResults& res
+)
+{
+    // Each cluster is solved by one processor, round-robin in the sorted
+    // order (every processor holds the whole cluster's inputs, so the
+    // result does not depend on which one); results by gathered index.
+    // The last bound charge of the members of the clusters this processor
+    // solves comes from their homes. Isolated parcels' dipoles enter as
+    // pair terms within the dipole solve's radius
+    const scalar rDipole2 =
+        (isolated_ == "inducedDipole" && this->nPolarisable())
+      ? sqr(this->rNear()) : -1;
+    const label N = gp.x.size();
+    for (vectorField* f : {&res.F, &res.M, &res.P, &res.Fout, &res.Mout})
+    {
+        f->setSize(N, Zero);
+    }
+    DynamicList<labelPair> mine;
+    forAll(cs.clusters, c)
+    {
+        stats_.maxClusterSize = max(stats_.maxClusterSize, cs.clusters[c].size());
+        if (c % Pstream::nProcs() == Pstream::myProcNo())
+        {
+            for (const label g : cs.clusters[c])
+            {
+                mine.append(gp.id(g));
+            }
+        }
+    }
+    const boundChargeMap known(fetchBoundCharge(mine));
+    const bool solveNow =
+        this->owner().db().time().timeIndex() % solveInterval_ == 0;
+    forAll(cs.clusters, c)
+    {
+        if (c % Pstream::nProcs() == Pstream::myProcNo())
+        {
+            solveCluster
+            (
+                gp, cs, c, known, E, rDipole2, solveNow, farField, res
+            );
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::shareResults(clusterResults& res)
+{
+    if (Pstream::parRun())
+    {
+        // Every entry is set by one processor and zero elsewhere: the sums
+        // are exact
+        for (vectorField* f : {&res.F, &res.M, &res.P, &res.Fout, &res.Mout})
+        {
+            Pstream::listCombineGather(*f, plusEqOp<vector>());
+            Pstream::listCombineScatter(*f);
+        }
+        reduce(stats_.gmresIterations, sumOp<label>());
+        reduce(stats_.gmresResidual, maxOp<scalar>());
+        reduce(stats_.energy, sumOp<scalar>());
+        reduce(stats_.nSolved, sumOp<label>());
+        reduce(res.remeshDelta, sumOp<scalar>());
+        bemNearFieldDetail::allGatherEntries(res.moments);
+    }
+    remeshOffset_ += res.remeshDelta;
+    gmresIterationsTotal_ += stats_.gmresIterations;
+    storeBoundCharge(res.sigmaB);
+    usedMoments_.swap(lastMoments_);
+    lastMoments_.swap(res.moments);
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::applyResults
+(
+    const gatheredParcels& gp,
+    const clusterSet& cs,
+    const clusterResults& res
+)
+{
+    // Members in contact with another parcel: chi^(2/5) (Ruan Eq. 44)
+    const scalar w = this->contactWeight();
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        const label g = gp.gathered[i++];
+        if (cs.members.found(labelPair(p.origProc(), p.origId())))
+        {
+            const bool inContact =
+                w != 1 && p.collisionRecords().pairRecords().size();
+            stats_.nInContact += inContact;
+            p.fE() = (inContact ? w : 1)*res.F[g];
+            p.tE() = (inContact ? w : 1)*res.M[g];
+            p.dipole() = res.P[g];
+        }
+        else if (g >= 0)
+        {
+            p.fE() += res.Fout[g];
+            p.tE() += res.Mout[g];
+        }
+    }
+    reduce(stats_.nInContact, sumOp<label>());
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::correct
+(
+    const ElectrostaticsModel<CloudType>& farField
+)
+{
+    CloudType& cloud = this->owner();
+    const scalar kappa0 = farField.mediumEpsilonR();
+
+    if (cmptMax(farField.periodicBox()) > 0)
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "nearField type bem in " << this->dict().name().c_str()
+            << " does not support periodic far fields yet"
+            << exit(FatalIOError);
+    }
+    if (!bem_)
+    {
+        bem_.reset(new bemSolver(kappa0, controls_));
+        shapeIndex_.clear();
+        shapeKeys_.clear();
+        shapeLastUse_.clear();
+    }
+    if (!stateRead_)
+    {
+        readState();
+    }
+    const bool writeTime = this->owner().db().time().writeTime();
+
+    gatheredParcels gp;
+    gatherParcels(kappa0, gp);
+    clusterSet cs;
+    formClusters(gp, kappa0, cs);
+    setNeighbourMultipoles(gp, cs);
 
     // Isolated parcels: dipoles (cluster members unpolarisable there) or
     // point charges
     cpuTime timer;
     if (isolated_ == "inducedDipole")
     {
-        this->solveDipoles(farField, members);
+        this->solveDipoles(farField, cs.members);
         dipoleTime_ += timer.cpuTimeIncrement();
     }
     else
@@ -1065,15 +1706,15 @@ void Foam::BemNearField<CloudType>::correct
         }
     }
 
-    stats_.nClusters = clusters.size();
-    stats_.nInClusters = members.size();
+    stats_.nClusters = cs.clusters.size();
+    stats_.nInClusters = cs.members.size();
     stats_.maxClusterSize = 0;
     stats_.gmresIterations = 0;
     stats_.gmresResidual = 0;
     stats_.energy = 0;
     stats_.nSolved = 0;
     stats_.nInContact = 0;
-    if (clusters.empty())
+    if (cs.clusters.empty())
     {
         trimCache();
         lastSigmaB_.clear();
@@ -1086,464 +1727,10 @@ void Foam::BemNearField<CloudType>::correct
         return;
     }
 
-    // The field at every centre after the far field, applied field and
-    // isolated dipoles
-    vectorField myE(n);
-    i = 0;
-    for (const auto& p : cloud)
-    {
-        myE[i++] = p.E();
-    }
-    const vectorField E
-    (
-        this->gatherAll(vectorField(UIndirectList<vector>(myE, sel)), start)
-    );
-    // The isolated parcels' induced dipoles (pair terms within the dipole
-    // solve's radius)
-    const scalar rDipole2 =
-        (isolated_ == "inducedDipole" && this->nPolarisable())
-      ? sqr(this->rNear()) : -1;
-    if (multipoleNeighbours_)
-    {
-        i = 0;
-        for (const auto& p : cloud)
-        {
-            myE[i++] = p.dipole();
-        }
-        const vectorField Pd
-        (
-            this->gatherAll(vectorField(UIndirectList<vector>(myE, sel)), start)
-        );
-        forAll(multipoles, g)
-        {
-            if (clusterOf[g] < 0)
-            {
-                multipoles[g].p = Pd[g];
-            }
-        }
-    }
-
-    const bool solveNow =
-        this->owner().db().time().timeIndex() % solveInterval_ == 0;
-
-    // Solve each cluster; results by gathered index
-    // Each cluster is solved by one processor, round-robin in the sorted
-    // order (every processor holds the whole cluster's inputs, so the
-    // result does not depend on which one)
-    vectorField F(N, Zero), M(N, Zero), P(N, Zero);
-    // Forces and torques on the parcels near clusters (not members)
-    vectorField Fout(N, Zero), Mout(N, Zero);
-    std::map<labelPair, std::pair<meshKey, scalarField>> sigmaB;
-    std::map<labelPair, bodyMoments> moments;
-    scalar remeshDelta = 0;
-    // The last bound charge of the members of the clusters this processor
-    // solves (the round-robin below), from their homes
-    DynamicList<labelPair> mine;
-    {
-        label c = -1;
-        for (const auto& cl : clusters)
-        {
-            if (++c % Pstream::nProcs() == Pstream::myProcNo())
-            {
-                for (const label g : cl.second)
-                {
-                    mine.append(labelPair(ids[2*g], ids[2*g + 1]));
-                }
-            }
-        }
-    }
-    const boundChargeMap known(fetchBoundCharge(mine));
-    label clusterI = -1;
-    for (const auto& c : clusters)
-    {
-        const DynamicList<label>& mem = c.second;
-        stats_.maxClusterSize = max(stats_.maxClusterSize, mem.size());
-        if (++clusterI % Pstream::nProcs() != Pstream::myProcNo())
-        {
-            continue;
-        }
-
-        // Each member's mesh and pose
-        labelList shapes(mem.size());
-        tensorField poses(mem.size());
-        vectorField Eext(mem.size());
-        forAll(mem, m)
-        {
-            const label g = mem[m];
-            const label nb = nearest[g];
-            const vector u = (x[nb] - x[g])/mag(x[nb] - x[g]);
-            const scalar aMin = min(cmptMin(S[g]), cmptMin(S[nb]));
-            // Grading towards the neighbour, measured against the exact
-            // two-sphere force (radii 1:1, 1:2, 1:5, epsilonR 2-1000,
-            // gaps 0.05-0.5 a): lambda = (0.5 + 0.5 rho^2) sqrt(g/a),
-            // rho = a/a_other <= 1 the size ratio of the pair, in
-            // [0.1, 1] and rounded down to a power of 2^(-1/4) (meshes
-            // reused); patches in proportion to the member's size over
-            // the pair's smaller (its gap region is ~sqrt(g a) wide), at
-            // most the largest block the preconditioner factorises
-            const scalar rho = aMin/max(cmptMin(S[g]), cmptMin(S[nb]));
-            const scalar lam0 = min
-            (
-                max
-                (
-                    (0.5 + 0.5*sqr(rho))
-                   *Foam::sqrt(max(nearestGap[g], scalar(0))/aMin),
-                    0.1
-                ),
-                1.0
-            );
-            const scalar lambda = Foam::pow
-            (
-                2.0,
-                -0.25*std::ceil(-4*Foam::log(lam0)/Foam::log(2.0) - 1e-9)
-            );
-            const label nP = min
-            (
-                label(std::round(nPatches_*cmptMin(S[g])/aMin)),
-                max(nPatches_, controls_.maxPreconditionerPatches)
-            );
-            const bool sphere = cmptMin(S[g]) == cmptMax(S[g]);
-            // Hysteresis: a member keeps its last mesh while that is at
-            // most one grading level finer than its gap asks for and (an
-            // ellipsoid) graded within 0.3 rad of the neighbour's
-            // direction (the 64 directions are ~0.45 rad apart), so that
-            // a gap or a direction oscillating about a level's edge does
-            // not remesh (and re-solve) every step
-            const auto last =
-                known.find(labelPair(ids[2*g], ids[2*g + 1]));
-            bool keep = false;
-            if (last != known.end())
-            {
-                const meshKey& k = last->second.first;
-                keep =
-                    k[0] == S[g].x() && k[1] == S[g].y() && k[2] == S[g].z()
-                 && k[5] == nP
-                 && k[4] <= lambda*(1 + 1e-9)
-                 && lambda <= k[4]*Foam::pow(2.0, 0.25)*(1 + 1e-9);
-                if (keep && !sphere && k[3] >= 0)
-                {
-                    const vector dir = fibonacciDirection
-                    (
-                        std::lround(k[3]), nFocusDirections
-                    );
-                    keep = (dir & (R[g].T() & u)) > Foam::cos(0.3);
-                }
-            }
-            shapes[m] =
-                keep
-              ? shapeOf(last->second.first)
-              : sphere
-              ? shapeFor(S[g], vector(1, 0, 0), lambda, nP)
-              : shapeFor(S[g], R[g].T() & u, lambda, nP);
-            poses[m] = sphere ? rotationFromX(u) : R[g];
-            selfEnergy(shapes[m], K[g]);
-        }
-
-        // External field of each member: everything but the cluster's own
-        // charges; the far field's energy of the pairs inside, q_i
-        // E_q,j.r_ij (a Coulomb pair), is taken out of the books as well
-        scalar Uout = 0;
-        forAll(mem, m)
-        {
-            const label g = mem[m];
-            Eext[m] = E[g];
-            for (const label h : mem)
-            {
-                if (h != g)
-                {
-                    const vector Eh =
-                        farField.pointChargeField(x[g], x[h], q[h]);
-                    Eext[m] -= Eh;
-                    Uout += 0.5*q[g]*(Eh & (x[g] - x[h]));
-                }
-            }
-        }
-
-        // The parcels near the cluster as multipoles at the patches, in
-        // place of what E holds of them at the centres (the far field's
-        // point charge, the dipole solve's dipole field)
-        const std::vector<label>& nbrs = neighbours[clusterI];
-        std::vector<pointMultipole> sources;
-        for (const label j : nbrs)
-        {
-            sources.push_back(multipoles[j]);
-            forAll(mem, m)
-            {
-                const label g = mem[m];
-                Eext[m] -= farField.pointChargeField(x[g], x[j], q[j]);
-                if (clusterOf[j] < 0 && magSqr(x[g] - x[j]) < rDipole2)
-                {
-                    pointMultipole d;
-                    d.x0 = x[j];
-                    d.p = multipoles[j].p;
-                    Eext[m] -= kC*d.fieldOverK(x[g]);
-                }
-            }
-        }
-        const bemSolver::fieldFunction Enear =
-            sources.empty()
-          ? bemSolver::fieldFunction()
-          : [&sources, kC](const point& y)
-            {
-                vector E(Zero);
-                for (const pointMultipole& s : sources)
-                {
-                    E += s.fieldOverK(y);
-                }
-                return vector(kC*E);
-            };
-
-        // The cluster on the given meshes, GMRES started from each
-        // member's last bound charge on the same mesh; returns how many
-        // members have one
-        auto setUp = [&](const labelList& meshes)
-        {
-            bem_->clearParticles();
-            bem_->setExternalField(Enear);
-            label carried = 0;
-            forAll(mem, m)
-            {
-                const label g = mem[m];
-                const label k =
-                    bem_->addParticle(meshes[m], x[g], poses[m], K[g], q[g]);
-                bem_->setParticleField(k, Eext[m]);
-                const auto last =
-                    known.find(labelPair(ids[2*g], ids[2*g + 1]));
-                if
-                (
-                    last != known.end()
-                 && last->second.first == shapeKeys_[meshes[m]]
-                )
-                {
-                    bem_->setInitialGuess(k, last->second.second);
-                    ++carried;
-                }
-            }
-            return carried;
-        };
-        auto run = [&](const bool solve)
-        {
-            const bemSolver::solveInfo& info =
-                solve ? bem_->solve() : bem_->evaluate();
-            stats_.nSolved += solve;
-            if (!info.converged)
-            {
-                FatalErrorInFunction
-                    << "BEM cluster of " << mem.size() << " parcels not"
-                    << " converged: relative residual " << info.residual
-                    << " after " << info.iterations << " GMRES iterations ("
-                    << this->dict().name().c_str() << "/solver: tolerance "
-                    << controls_.tolerance << ", maxIter " << controls_.maxIter
-                    << ")" << exit(FatalError);
-            }
-            stats_.gmresIterations += info.iterations;
-            setupTime_ += info.setupTime;
-            stats_.gmresResidual = max(stats_.gmresResidual, info.residual);
-        };
-        // Energy (Eq. 51) beyond the far field's, of the last solve: the
-        // cluster's minus its members alone minus the far field's internal
-        // pairs, and the bound charge in the external field, -1/2 p_b.E_ext
-        auto energyBeyondFarField = [&](const labelList& meshes)
-        {
-            scalar U = bem_->energy() - Uout;
-            forAll(mem, m)
-            {
-                const label g = mem[m];
-                U -= sqr(q[g])*selfEnergy_.at(std::make_pair(meshes[m], K[g]));
-                U -= 0.5*(bem_->boundDipole(m) & Eext[m]);
-            }
-            // The neighbours (linear media: 1/2 sum of free charge x
-            // potential, Jackson, Classical Electrodynamics, Sec. 4.7):
-            // with f the free and b the bound charges,
-            // U(fA, fj) + 1/2 U(fA, bj) + 1/2 U(bA, fj), less the far
-            // field's point-charge pairs. An isolated parcel's dipole
-            // has its 1/2 U(bj, A) in the dipole solve's energy; a pair
-            // of clusters is counted half from each side
-            List<scalarField> cMem(mem.size());
-            forAll(mem, m)
-            {
-                cMem[m] = bem_->mediumCharges(m);
-            }
-            for (const label j : nbrs)
-            {
-                const bool member = clusterOf[j] >= 0;
-                const scalar w = member ? 0.5 : 1;
-                pointMultipole fj, bj;
-                fj.x0 = bj.x0 = x[j];
-                fj.q = q[j];
-                fj.Q = Qfree[j];
-                if (member)
-                {
-                    bj.p = multipoles[j].p;
-                    bj.Q = multipoles[j].Q - Qfree[j];
-                }
-                forAll(mem, m)
-                {
-                    const scalarField& a = bem_->mesh(meshes[m]).areas();
-                    const scalarField& sf = bem_->sigmaF(m);
-                    const scalarField& c = cMem[m];
-                    const SubList<point> y(bem_->centres(m));
-                    scalar Um = 0;
-                    forAll(c, k)
-                    {
-                        const scalar f = a[k]*sf[k];
-                        const scalar phiF = fj.potentialOverK(y[k]);
-                        Um += f*phiF + 0.5*(c[k] - f)*phiF;
-                        if (member)
-                        {
-                            Um += 0.5*f*bj.potentialOverK(y[k]);
-                        }
-                    }
-                    const label h = mem[m];
-                    U += w*kC*(Um - q[h]*q[j]/mag(x[h] - x[j]));
-                    if (!member)
-                    {
-                        // The dipole solve's -1/2 p_j . E holds the
-                        // member's bound moments too (they induce p_j),
-                        // but the energy has no bound-bound term
-                        pointMultipole bh(multipoles[h]);
-                        bh.q = 0;
-                        bh.Q -= Qfree[h];
-                        U += 0.5*kC*(multipoles[j].p & bh.fieldOverK(x[j]));
-                    }
-                }
-            }
-            return U;
-        };
-
-        // Members whose mesh changed since the last step: the energy on the
-        // old meshes at this configuration too, so that the books carry the
-        // difference across the mesh change (a discretisation jump, not
-        // work of the forces)
-        labelList oldShapes(shapes);
-        bool remeshed = false;
-        forAll(mem, m)
-        {
-            const label g = mem[m];
-            const auto last =
-                known.find(labelPair(ids[2*g], ids[2*g + 1]));
-            if
-            (
-                last != known.end()
-             && last->second.first != shapeKeys_[shapes[m]]
-            )
-            {
-                oldShapes[m] = shapeOf(last->second.first);
-                selfEnergy(oldShapes[m], K[g]);
-                remeshed = true;
-            }
-        }
-        if (remeshed)
-        {
-            setUp(oldShapes);
-            run(true);
-            remeshDelta += energyBeyondFarField(oldShapes);
-        }
-
-        // Between solves (solveInterval) the bound charge is carried in the
-        // members' body frames, when every member has one on its mesh
-        const label carried = setUp(shapes);
-        run(solveNow || carried < mem.size());
-        const scalar U = energyBeyondFarField(shapes);
-        if (remeshed)
-        {
-            remeshDelta -= U;
-        }
-        forAll(mem, m)
-        {
-            const label g = mem[m];
-            F[g] = bem_->forces()[m];
-            M[g] = bem_->torques()[m];
-            P[g] = bem_->boundDipole(m);
-            const pointMultipole mm(bem_->multipole(m));
-            moments.emplace
-            (
-                labelPair(ids[2*g], ids[2*g + 1]),
-                bodyMoments(R[g].T() & mm.p, transform(R[g].T(), mm.Q))
-            );
-            sigmaB.emplace
-            (
-                labelPair(ids[2*g], ids[2*g + 1]),
-                std::make_pair
-                (
-                    shapeKeys_[shapes[m]],
-                    scalarField(bem_->sigmaB(m))
-                )
-            );
-        }
-        stats_.energy += U;
-
-        // Reaction on the other parcels near the cluster: minus the force
-        // and moment of their multipoles on the members' patch charges, in
-        // place of the far field's point-charge pair force, the dipole
-        // solve's dipole-charge pair force and the torque p x E of what
-        // their E holds of the members
-        List<scalarField> cMem(mem.size());
-        forAll(mem, m)
-        {
-            cMem[m] = bem_->mediumCharges(m);
-        }
-        for (const label j : nbrs)
-        {
-            if (clusterOf[j] >= 0)
-            {
-                continue;
-            }
-            const pointMultipole& mj = multipoles[j];
-            forAll(mem, m)
-            {
-                const scalarField& c = cMem[m];
-                const SubList<point> y(bem_->centres(m));
-                forAll(c, k)
-                {
-                    const vector f = (kC*c[k])*mj.fieldOverK(y[k]);
-                    Fout[j] -= f;
-                    Mout[j] -= (y[k] - x[j]) ^ f;
-                }
-                const label h = mem[m];
-                const vector Eq = farField.pointChargeField(x[j], x[h], q[h]);
-                Fout[j] -= q[j]*Eq;
-                const vector r = x[j] - x[h];
-                const scalar r2 = magSqr(r);
-                if (r2 < rDipole2)
-                {
-                    const scalar ir3 = 1/(r2*Foam::sqrt(r2));
-                    Fout[j] -=
-                        mj.p
-                      & ((kC*q[h]*ir3)*(symmTensor::I - 3*sqr(r)/r2));
-                }
-                pointMultipole mh(multipoles[h]);
-                mh.q = 0;
-                Mout[j] -= mj.p ^ (Eq + kC*mh.fieldOverK(x[j]));
-            }
-        }
-    }
-    if (Pstream::parRun())
-    {
-        // Every entry is set by one processor and zero elsewhere: the sums
-        // are exact
-        Pstream::listCombineGather(F, plusEqOp<vector>());
-        Pstream::listCombineScatter(F);
-        Pstream::listCombineGather(M, plusEqOp<vector>());
-        Pstream::listCombineScatter(M);
-        Pstream::listCombineGather(P, plusEqOp<vector>());
-        Pstream::listCombineScatter(P);
-        Pstream::listCombineGather(Fout, plusEqOp<vector>());
-        Pstream::listCombineScatter(Fout);
-        Pstream::listCombineGather(Mout, plusEqOp<vector>());
-        Pstream::listCombineScatter(Mout);
-        reduce(stats_.gmresIterations, sumOp<label>());
-        reduce(stats_.gmresResidual, maxOp<scalar>());
-        reduce(stats_.energy, sumOp<scalar>());
-        reduce(stats_.nSolved, sumOp<label>());
-        reduce(remeshDelta, sumOp<scalar>());
-        bemNearFieldDetail::allGatherEntries(moments);
-    }
-    remeshOffset_ += remeshDelta;
-    gmresIterationsTotal_ += stats_.gmresIterations;
-    storeBoundCharge(sigmaB);
-    usedMoments_.swap(lastMoments_);
-    lastMoments_.swap(moments);
+    const vectorField E(gatherFields(gp, cs));
+    clusterResults res;
+    solveClusters(gp, cs, E, farField, res);
+    shareResults(res);
     trimCache();
     reduce(stats_.nShapes, maxOp<label>());
     reduce(stats_.cacheBytes, maxOp<scalar>());
@@ -1551,30 +1738,7 @@ void Foam::BemNearField<CloudType>::correct
     {
         writeState();
     }
-
-    // Members in contact with another parcel: chi^(2/5) (Ruan Eq. 44)
-    const scalar w = this->contactWeight();
-    i = 0;
-    for (auto& p : cloud)
-    {
-        if (members.found(labelPair(p.origProc(), p.origId())))
-        {
-            const label g = gathered[i];
-            const bool inContact =
-                w != 1 && p.collisionRecords().pairRecords().size();
-            stats_.nInContact += inContact;
-            p.fE() = (inContact ? w : 1)*F[g];
-            p.tE() = (inContact ? w : 1)*M[g];
-            p.dipole() = P[g];
-        }
-        else if (gathered[i] >= 0)
-        {
-            p.fE() += Fout[gathered[i]];
-            p.tE() += Mout[gathered[i]];
-        }
-        ++i;
-    }
-    reduce(stats_.nInContact, sumOp<label>());
+    applyResults(gp, cs, res);
     clusterTime_ += timer.cpuTimeIncrement();
 }
 

@@ -123,26 +123,31 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::InducedDipoleNearField<CloudType>::solveDipoles
+Foam::label Foam::InducedDipoleNearField<CloudType>::ownParcels
 (
-    const ElectrostaticsModel<CloudType>& farField,
-    const parcelIdSet& excluded
-)
+    const scalar kappa0,
+    const parcelIdSet& excluded,
+    pointField& x,
+    scalarField& q,
+    tensorField& A,
+    vectorField& E,
+    vectorField& P,
+    List<labelPair>& keys,
+    scalar& dMax
+) const
 {
-    CloudType& cloud = this->owner();
-    const scalar kappa0 = farField.mediumEpsilonR();
+    // This processor's parcels: centres, charges, polarisabilities (zero:
+    // not polarisable or excluded), the far field at them, the last
+    // dipoles and the ids; returns how many are polarisable
+    const CloudType& cloud = this->owner();
     const label n = cloud.size();
-
-    // This processor's parcels: centres, charges, polarisabilities, the
-    // far field at them, the last dipoles and the ids
-    pointField myX(n);
-    scalarField myQ(n);
-    tensorField myA(n);
-    vectorField myE(n);
-    vectorField myP(n);
-    labelList myId(2*n);
-
-    scalar dMax = 0;
+    x.setSize(n);
+    q.setSize(n);
+    A.setSize(n);
+    E.setSize(n);
+    P.setSize(n);
+    keys.setSize(n);
+    dMax = 0;
     label nPolar = 0;
     label i = 0;
     for (const auto& p : cloud)
@@ -157,19 +162,14 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
                 << " epsilonR (" << this->dict().name().c_str() << ")"
                 << exit(FatalError);
         }
-        myX[i] = p.centre();
-        myQ[i] = p.q();
-        myE[i] = p.E();
-        myP[i] = p.dipole();
-        myId[2*i] = p.origProc();
-        myId[2*i + 1] = p.origId();
-        if
-        (
-            p.epsilonR() != kappa0
-         && !excluded.found(labelPair(p.origProc(), p.origId()))
-        )
+        x[i] = p.centre();
+        q[i] = p.q();
+        E[i] = p.E();
+        P[i] = p.dipole();
+        keys[i] = labelPair(p.origProc(), p.origId());
+        if (p.epsilonR() != kappa0 && !excluded.found(keys[i]))
         {
-            myA[i] = inducedDipole::polarisability
+            A[i] = inducedDipole::polarisability
             (
                 p.semiAxes(),
                 depolarisationFactors(p.semiAxes()),
@@ -182,10 +182,183 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         }
         else
         {
-            myA[i] = Zero;
+            A[i] = Zero;
         }
         ++i;
     }
+    return nPolar;
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::setNearRadius
+(
+    const scalar dMax,
+    const vector& L
+)
+{
+    rNear_ = rNearFor(dMax);
+    if (!(rNear_ >= dMax))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry rNear = " << rNear_ << " in "
+            << this->dict().name().c_str() << " is below the bounding"
+            << " diameter " << dMax << " of the largest polarisable parcel:"
+            << " pairs in contact would be left out" << exit(FatalIOError);
+    }
+    if (cmptMax(L) > 0 && !(2*rNear_ < cmptMin(L)))
+    {
+        FatalIOErrorInFunction(this->dict())
+            << "Entry rNear = " << rNear_ << " in "
+            << this->dict().name().c_str() << " must be below half the"
+            << " periodic box edge " << cmptMin(L)
+            << (
+                   rNearGiven_ > 0
+                 ? std::string()
+                 : " (the default, " + std::string(Foam::name(rNearDiameters_))
+                 + " bounding diameters of the largest polarisable parcel:"
+                   " give a smaller one)"
+               ).c_str()
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+std::unique_ptr<Foam::processorHalo>
+Foam::InducedDipoleNearField<CloudType>::gatherHalo
+(
+    const vector& L,
+    pointField& x,
+    scalarField& q,
+    tensorField& A,
+    vectorField& E0,
+    vectorField& P0,
+    List<labelPair>& keys
+) const
+{
+    // In parallel, copies of the other processors' parcels within rNear
+    // of this processor's box appended (a halo: every pair of an own
+    // parcel is here; through the periodic box's translations if the far
+    // field is periodic)
+    std::unique_ptr<processorHalo> halo;
+    if (Pstream::parRun())
+    {
+        halo.reset
+        (
+            new processorHalo
+            (
+                processorHalo::processorBoxes(this->owner().mesh()),
+                x,
+                rNear_,
+                cmptMax(L) > 0
+              ? processorHalo::boxTranslations(L)
+              : List<vector>()
+            )
+        );
+        x = halo->points();
+        halo->gather(q);
+        halo->gather(A);
+        halo->gather(E0);
+        halo->gather(P0);
+        halo->gather(keys);
+    }
+    return halo;
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::setContactPairs
+(
+    const UList<labelPair>& keys,
+    const labelList& rank
+)
+{
+    // Pairs in contact, from the collision records (Ruan Eq. 44): keys
+    // and rank of the own parcels and the halo's copies
+    const label N = keys.size();
+    HashTable<label, labelPair, labelPair::Hash<>> where(2*N);
+    for (label k = 0; k < N; ++k)
+    {
+        where.insert(keys[k], rank[k]);
+    }
+    DynamicList<labelPair> contacts;
+    label i = 0;
+    for (const auto& p : this->owner())
+    {
+        const label gi = rank[i];
+        for (const auto& record : p.collisionRecords().pairRecords())
+        {
+            const auto iter = where.cfind
+            (
+                labelPair(record.origProcOfOther(), record.origIdOfOther())
+            );
+            if (iter.found())
+            {
+                contacts.append(labelPair(gi, iter.val()));
+            }
+        }
+        ++i;
+    }
+    // Every parcel's records name its partners (both sides keep one), so
+    // the own parcels' records hold every pair this processor needs
+    dipoles_.setPairWeights(contacts, contactWeight_);
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::storeResults
+(
+    const labelList& rank,
+    const boolList& owned
+)
+{
+    const inducedDipole& dipoles = dipoles_;
+    label i = 0;
+    for (auto& p : this->owner())
+    {
+        const label g = rank[i];
+        p.E() = dipoles.fields()[g];
+        p.fE() += dipoles.forceIncrements()[g];
+        p.tE() = dipoles.torques()[g];
+        p.dipole() = dipoles.dipoles()[g];
+        ++i;
+    }
+
+    energy_ = dipoles.externalEnergy();
+    // Pairs of the whole cloud: a pair with a copy is on two processors
+    scalar nPairs = 0;
+    for (const inducedDipole::pair& ij : dipoles.pairs())
+    {
+        nPairs += 0.5*(owned[ij.i] + owned[ij.j]);
+    }
+    nPairs_ = label(returnReduce(nPairs, sumOp<scalar>()) + 0.5);
+    iterations_ = dipoles.iterations();
+    residual_ = dipoles.residual();
+}
+
+
+template<class CloudType>
+void Foam::InducedDipoleNearField<CloudType>::solveDipoles
+(
+    const ElectrostaticsModel<CloudType>& farField,
+    const parcelIdSet& excluded
+)
+{
+    CloudType& cloud = this->owner();
+    const scalar kappa0 = farField.mediumEpsilonR();
+    const label n = cloud.size();
+
+    // This processor's parcels and, in parallel, the halo's copies
+    // (gathered below)
+    pointField x;
+    scalarField q;
+    tensorField A;
+    vectorField E0;
+    vectorField P0;
+    List<labelPair> keys;
+    scalar dMax = 0;
+    label nPolar = ownParcels(kappa0, excluded, x, q, A, E0, P0, keys, dMax);
     reduce(dMax, maxOp<scalar>());
     reduce(nPolar, sumOp<label>());
     nPolarisable_ = nPolar;
@@ -204,69 +377,13 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         residual_ = 0;
         return;
     }
-
-    rNear_ = rNearFor(dMax);
-    if (!(rNear_ >= dMax))
-    {
-        FatalIOErrorInFunction(this->dict())
-            << "Entry rNear = " << rNear_ << " in "
-            << this->dict().name().c_str() << " is below the bounding"
-            << " diameter " << dMax << " of the largest polarisable parcel:"
-            << " pairs in contact would be left out" << exit(FatalIOError);
-    }
     const vector L(farField.periodicBox());
-    if (cmptMax(L) > 0 && !(2*rNear_ < cmptMin(L)))
-    {
-        FatalIOErrorInFunction(this->dict())
-            << "Entry rNear = " << rNear_ << " in "
-            << this->dict().name().c_str() << " must be below half the"
-            << " periodic box edge " << cmptMin(L)
-            << (
-                   rNearGiven_ > 0
-                 ? std::string()
-                 : " (the default, " + std::string(Foam::name(rNearDiameters_))
-                 + " bounding diameters of the largest polarisable parcel:"
-                   " give a smaller one)"
-               ).c_str()
-            << exit(FatalIOError);
-    }
+    setNearRadius(dMax, L);
 
-    // This processor's parcels and, in parallel, copies of the other
-    // processors' parcels within rNear of its box (a halo: every pair of
-    // an own parcel is here; through the periodic box's translations if
-    // the far field is periodic), sorted by (origProc, origId)
-    pointField x(myX);
-    scalarField q(myQ);
-    tensorField A(myA);
-    vectorField E0(myE);
-    vectorField P0(myP);
-    List<labelPair> keys(n);
-    forAll(keys, k)
-    {
-        keys[k] = labelPair(myId[2*k], myId[2*k + 1]);
-    }
-    std::unique_ptr<processorHalo> halo;
-    if (Pstream::parRun())
-    {
-        halo.reset
-        (
-            new processorHalo
-            (
-                processorHalo::processorBoxes(this->owner().mesh()),
-                myX,
-                rNear_,
-                cmptMax(L) > 0
-              ? processorHalo::boxTranslations(L)
-              : List<vector>()
-            )
-        );
-        x = halo->points();
-        halo->gather(q);
-        halo->gather(A);
-        halo->gather(E0);
-        halo->gather(P0);
-        halo->gather(keys);
-    }
+    const std::unique_ptr<processorHalo> halo
+    (
+        gatherHalo(L, x, q, A, E0, P0, keys)
+    );
     const label N = x.size();
     labelList ids(2*N);
     forAll(keys, k)
@@ -329,62 +446,16 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
         );
     }
 
-    // Pairs in contact, from the collision records (Ruan Eq. 44)
     if (contactWeight_ != 1)
     {
-        HashTable<label, labelPair, labelPair::Hash<>> where(2*N);
-        for (label k = 0; k < N; ++k)
-        {
-            where.insert(labelPair(ids[2*k], ids[2*k + 1]), rank[k]);
-        }
-        DynamicList<labelPair> contacts;
-        i = 0;
-        for (const auto& p : cloud)
-        {
-            const label gi = rank[i];
-            for (const auto& record : p.collisionRecords().pairRecords())
-            {
-                const auto iter = where.cfind
-                (
-                    labelPair(record.origProcOfOther(), record.origIdOfOther())
-                );
-                if (iter.found())
-                {
-                    contacts.append(labelPair(gi, iter.val()));
-                }
-            }
-            ++i;
-        }
-        // Every parcel's records name its partners (both sides keep one),
-        // so the own parcels' records hold every pair this processor needs
-        dipoles.setPairWeights(contacts, contactWeight_);
+        setContactPairs(keys, rank);
     }
 
     dipoles.solve();
     // The communication above refers to this call's halo
     dipoles.setDistribution(boolList(), nullptr, nullptr);
 
-    i = 0;
-    for (auto& p : cloud)
-    {
-        const label g = rank[i];
-        p.E() = dipoles.fields()[g];
-        p.fE() += dipoles.forceIncrements()[g];
-        p.tE() = dipoles.torques()[g];
-        p.dipole() = dipoles.dipoles()[g];
-        ++i;
-    }
-
-    energy_ = dipoles.externalEnergy();
-    // Pairs of the whole cloud: a pair with a copy is on two processors
-    scalar nPairs = 0;
-    for (const inducedDipole::pair& ij : dipoles.pairs())
-    {
-        nPairs += 0.5*(owned[ij.i] + owned[ij.j]);
-    }
-    nPairs_ = label(returnReduce(nPairs, sumOp<scalar>()) + 0.5);
-    iterations_ = dipoles.iterations();
-    residual_ = dipoles.residual();
+    storeResults(rank, owned);
 }
 
 
