@@ -9,6 +9,7 @@
 #include "OStringStream.H"
 #include "Pstream.H"
 #include "processorHalo.H"
+#include "cutoffPairs.H"
 #include "ListListOps.H"
 
 #include <mpi.h>
@@ -258,10 +259,7 @@ struct cellSortedCharges
     {
         const label N = xw.size();
         for (Foam::direction d = 0; d < 3; ++d) nc[d] = n[d];
-        const label nCells = nc[0]*nc[1]*nc[2];
         std::vector<label> cellOf(N);
-        start.assign(nCells + 1, 0);
-        order.resize(N);
         for (label i = 0; i < N; ++i)
         {
             label c[3];
@@ -270,13 +268,8 @@ struct cellSortedCharges
                 c[d] = std::min(nc[d] - 1, label(xw[i][d]*nc[d]/L[d]));
             }
             cellOf[i] = c[0] + nc[0]*(c[1] + nc[1]*c[2]);
-            ++start[cellOf[i] + 1];
         }
-        for (label c = 0; c < nCells; ++c) start[c + 1] += start[c];
-        {
-            std::vector<label> fill(start.begin(), start.end() - 1);
-            for (label i = 0; i < N; ++i) order[fill[cellOf[i]]++] = i;
-        }
+        Foam::sortByBin(cellOf, nc[0]*nc[1]*nc[2], start, order);
         xs.resize(N);
         ys.resize(N);
         zs.resize(N);

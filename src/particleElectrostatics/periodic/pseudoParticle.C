@@ -4,6 +4,7 @@
 
 #include "pseudoParticle.H"
 #include "error.H"
+#include "cutoffPairs.H"
 
 #include <vector>
 
@@ -111,10 +112,8 @@ void Foam::pseudoParticle::buildGrid
     std::vector<point>& xk = g.xk;
     std::vector<vector>& hk = g.hk;
     cellOf.resize(N);
-    start.assign(nCells + 1, 0);
-    order.resize(N);
 
-    // Cell of each particle and particles sorted by cell (counting sort)
+    // Cell of each particle and particles sorted by cell
     std::vector<point> xw(N);
     for (label i = 0; i < N; ++i)
     {
@@ -125,13 +124,8 @@ void Foam::pseudoParticle::buildGrid
             c[d] = min(ne - 1, label(xw[i][d]/dx[d]));
         }
         cellOf[i] = c[0] + ne*(c[1] + ne*c[2]);
-        ++start[cellOf[i] + 1];
     }
-    for (label c = 0; c < nCells; ++c) start[c + 1] += start[c];
-    {
-        std::vector<label> fill(start.begin(), start.end() - 1);
-        for (label i = 0; i < N; ++i) order[fill[cellOf[i]]++] = i;
-    }
+    sortByBin(cellOf, nCells, start, order);
     xs.resize(N);
     qs.resize(N);
     for (label s = 0; s < N; ++s)
