@@ -258,6 +258,204 @@ struct result
 };
 
 
+//- A particle against a wall: contact mechanics (Eq. 4 or 25) into res;
+//  returns the largest contact area
+scalar wallContact
+(
+    const word& name,
+    const dictionary& dict,
+    const sphere& pI,
+    const bool hertz,
+    result& res
+)
+{
+    scalar A = 0;
+    res.mStar = pI.mass();
+    res.rStar = pI.r;
+    bool rigid = true;
+    if (dict.found("wall"))
+    {
+        const dictionary& w = dict.subDict("wall");
+        rigid = false;
+        res.YStar = triboCharging::effectiveModulus
+        (
+            pI.E, pI.nu, readPositive(w, "E"), readPoisson(w, "nu")
+        );
+        if (!hertz)
+        {
+            WarningInFunction
+                << "Entry " << name << ": the wall's E and nu are not"
+                << " used by Eq. (25) (rigid wall); set"
+                << " contactAreaModel hertz to use them" << endl;
+        }
+    }
+    if (rigid || !hertz)
+    {
+        res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu);
+    }
+    res.deltaMax = triboCharging::hertzMaxOverlap
+    (
+        res.mStar, res.rStar, res.YStar, res.vn
+    );
+    res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
+    A = hertz
+      ? res.AHertz
+      : triboCharging::maxContactAreaWall
+        (
+            pI.r, pI.rho, pI.E, pI.nu, res.vn
+        );
+    res.eqs = hertz ? "A: Hertz Eq.4" : "A: Eq.25";
+    return A;
+}
+
+
+//- A particle against a particle: contact mechanics (Eq. 4 or 26), Gamma
+//  (Eq. 18 or 15) and kappa_c (Eqs. 21-23) into res; returns the largest
+//  contact area
+scalar pairContact
+(
+    const dictionary& dict,
+    const sphere& pI,
+    const bool hertz,
+    const bool hasWF,
+    const scalar GammaWF,
+    result& res
+)
+{
+    const scalar mI = pI.mass();
+    scalar A = 0;
+    const bool like = !dict.found("partner");
+    const sphere pJ =
+        like ? pI : readSphere(dict.subDict("partner"), &pI);
+    const scalar mJ = pJ.mass();
+
+    res.mStar = triboCharging::effectiveMass(mI, mJ);
+    res.rStar = triboCharging::effectiveRadius(pI.r, pJ.r);
+    res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu, pJ.E, pJ.nu);
+    res.deltaMax = triboCharging::hertzMaxOverlap
+    (
+        res.mStar, res.rStar, res.YStar, res.vn
+    );
+    res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
+    A = hertz
+      ? res.AHertz
+      : triboCharging::maxContactAreaPair
+        (
+            mI, pI.r, pI.E, pI.nu, mJ, pJ.r, pJ.E, pJ.nu, res.vn
+        );
+    res.eqs = hertz ? "A: Hertz Eq.4" : "A: Eq.26";
+
+    // Gamma: Eq. (18) or work functions; kappa_c: Eqs. (21)-(23)
+    if (hasWF)
+    {
+        res.Gamma = GammaWF;
+        res.eqs += ", G: Eq.15";
+    }
+    else if (like)
+    {
+        res.Gamma = 0;
+        res.eqs += ", G: Eq.18 (like)";
+    }
+    else
+    {
+        if (!pI.hasSat && !pJ.hasSat)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry qSat or sigmaSat is missing in "
+                << dict.name().c_str() << " (and its partner): Gamma of"
+                << " unlike particles needs saturation data (Eq. 18) or"
+                << " workFunctions" << exit(FatalIOError);
+        }
+        res.Gamma = triboCharging::GammaFromSaturationChargeDensity
+        (
+            pI.sigmaSat(), pJ.sigmaSat()
+        );
+        res.eqs += ", G: Eq.18";
+    }
+
+    if (like)
+    {
+        const bool hasDq = dict.found("dq");
+        const bool hasDiff = dict.found("chargeDifference");
+        if (hasDq != hasDiff)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry " << (hasDq ? "chargeDifference" : "dq")
+                << " is missing in " << dict.name().c_str()
+                << ": Eq. (22) needs both dq and chargeDifference"
+                << " (q_j - q_i); give neither for Eq. (23)"
+                << exit(FatalIOError);
+        }
+        if (hasDq)
+        {
+            res.kappaC = triboCharging::kappaLikePair
+            (
+                readFinite(dict, "dq"),
+                A,
+                pI.r,
+                readFinite(dict, "chargeDifference")
+            );
+            res.eqs += ", k: Eq.22";
+        }
+        else
+        {
+            res.kappaC = triboCharging::kappaLikePair(A, pI.r);
+            res.eqs += ", k: Eq.23";
+        }
+    }
+    else
+    {
+        res.kappaC = triboCharging::kappaPair
+        (
+            readFinite(dict, "dq"),
+            A,
+            pI.r, pI.qSat, pI.q0,
+            pJ.r, pJ.qSat, pJ.q0
+        );
+        res.eqs += ", k: Eq.21";
+    }
+    return A;
+}
+
+
+//- A particle against a wall: Gamma (Eq. 17 or 14-15) and kappa_c (Eq. 20
+//  or 16) into res
+void wallCharging
+(
+    const dictionary& dict,
+    const sphere& pI,
+    const bool hasWF,
+    const scalar GammaWF,
+    const scalar A,
+    result& res
+)
+{
+    const scalar dq = readFinite(dict, "dq");
+    if (pI.hasSat)
+    {
+        res.Gamma = triboCharging::GammaFromSaturationCharge(pI.qSat, pI.r);
+        res.kappaC = triboCharging::kappaWall(dq, A, pI.r, pI.qSat, pI.q0);
+        res.eqs += ", G: Eq.17, k: Eq.20";
+    }
+    else if (hasWF)
+    {
+        res.Gamma = GammaWF;
+        res.kappaC = triboCharging::kappaFromTransfer
+        (
+            dq, A, res.Gamma, triboCharging::surfaceField(pI.q0, pI.r)
+        );
+        res.eqs += ", G: Eq.15, k: Eq.16";
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry qSat, sigmaSat or workFunctions is missing in "
+            << dict.name().c_str() << ": one of them gives Gamma"
+            << " (Eq. 17 or Eqs. 14-15)" << exit(FatalIOError);
+    }
+}
+
+
 result evaluate
 (
     const word& name,
@@ -314,168 +512,16 @@ result evaluate
             << exit(FatalIOError);
     }
 
-    // Contact mechanics
-    const scalar mI = pI.mass();
-    scalar A = 0;
-    if (wall)
-    {
-        res.mStar = mI;
-        res.rStar = pI.r;
-        bool rigid = true;
-        if (dict.found("wall"))
-        {
-            const dictionary& w = dict.subDict("wall");
-            rigid = false;
-            res.YStar = triboCharging::effectiveModulus
-            (
-                pI.E, pI.nu, readPositive(w, "E"), readPoisson(w, "nu")
-            );
-            if (!hertz)
-            {
-                WarningInFunction
-                    << "Entry " << name << ": the wall's E and nu are not"
-                    << " used by Eq. (25) (rigid wall); set"
-                    << " contactAreaModel hertz to use them" << endl;
-            }
-        }
-        if (rigid || !hertz)
-        {
-            res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu);
-        }
-        res.deltaMax = triboCharging::hertzMaxOverlap
-        (
-            res.mStar, res.rStar, res.YStar, res.vn
-        );
-        res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
-        A = hertz
-          ? res.AHertz
-          : triboCharging::maxContactAreaWall
-            (
-                pI.r, pI.rho, pI.E, pI.nu, res.vn
-            );
-        res.eqs = hertz ? "A: Hertz Eq.4" : "A: Eq.25";
-    }
-    else
-    {
-        const bool like = !dict.found("partner");
-        const sphere pJ =
-            like ? pI : readSphere(dict.subDict("partner"), &pI);
-        const scalar mJ = pJ.mass();
-
-        res.mStar = triboCharging::effectiveMass(mI, mJ);
-        res.rStar = triboCharging::effectiveRadius(pI.r, pJ.r);
-        res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu, pJ.E, pJ.nu);
-        res.deltaMax = triboCharging::hertzMaxOverlap
-        (
-            res.mStar, res.rStar, res.YStar, res.vn
-        );
-        res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
-        A = hertz
-          ? res.AHertz
-          : triboCharging::maxContactAreaPair
-            (
-                mI, pI.r, pI.E, pI.nu, mJ, pJ.r, pJ.E, pJ.nu, res.vn
-            );
-        res.eqs = hertz ? "A: Hertz Eq.4" : "A: Eq.26";
-
-        // Gamma: Eq. (18) or work functions; kappa_c: Eqs. (21)-(23)
-        if (hasWF)
-        {
-            res.Gamma = GammaWF;
-            res.eqs += ", G: Eq.15";
-        }
-        else if (like)
-        {
-            res.Gamma = 0;
-            res.eqs += ", G: Eq.18 (like)";
-        }
-        else
-        {
-            if (!pI.hasSat && !pJ.hasSat)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Entry qSat or sigmaSat is missing in "
-                    << dict.name().c_str() << " (and its partner): Gamma of"
-                    << " unlike particles needs saturation data (Eq. 18) or"
-                    << " workFunctions" << exit(FatalIOError);
-            }
-            res.Gamma = triboCharging::GammaFromSaturationChargeDensity
-            (
-                pI.sigmaSat(), pJ.sigmaSat()
-            );
-            res.eqs += ", G: Eq.18";
-        }
-
-        if (like)
-        {
-            const bool hasDq = dict.found("dq");
-            const bool hasDiff = dict.found("chargeDifference");
-            if (hasDq != hasDiff)
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Entry " << (hasDq ? "chargeDifference" : "dq")
-                    << " is missing in " << dict.name().c_str()
-                    << ": Eq. (22) needs both dq and chargeDifference"
-                    << " (q_j - q_i); give neither for Eq. (23)"
-                    << exit(FatalIOError);
-            }
-            if (hasDq)
-            {
-                res.kappaC = triboCharging::kappaLikePair
-                (
-                    readFinite(dict, "dq"),
-                    A,
-                    pI.r,
-                    readFinite(dict, "chargeDifference")
-                );
-                res.eqs += ", k: Eq.22";
-            }
-            else
-            {
-                res.kappaC = triboCharging::kappaLikePair(A, pI.r);
-                res.eqs += ", k: Eq.23";
-            }
-        }
-        else
-        {
-            res.kappaC = triboCharging::kappaPair
-            (
-                readFinite(dict, "dq"),
-                A,
-                pI.r, pI.qSat, pI.q0,
-                pJ.r, pJ.qSat, pJ.q0
-            );
-            res.eqs += ", k: Eq.21";
-        }
-    }
+    // Contact mechanics, then the wall's charging parameters (the
+    // pair's come with its mechanics)
+    const scalar A =
+        wall
+      ? wallContact(name, dict, pI, hertz, res)
+      : pairContact(dict, pI, hertz, hasWF, GammaWF, res);
     res.Amax = A;
-
-    // Wall: Gamma Eq. (17) or (14)-(15); kappa_c Eq. (20) or (16)
     if (wall)
     {
-        const scalar dq = readFinite(dict, "dq");
-        if (pI.hasSat)
-        {
-            res.Gamma = triboCharging::GammaFromSaturationCharge(pI.qSat, pI.r);
-            res.kappaC = triboCharging::kappaWall(dq, A, pI.r, pI.qSat, pI.q0);
-            res.eqs += ", G: Eq.17, k: Eq.20";
-        }
-        else if (hasWF)
-        {
-            res.Gamma = GammaWF;
-            res.kappaC = triboCharging::kappaFromTransfer
-            (
-                dq, A, res.Gamma, triboCharging::surfaceField(pI.q0, pI.r)
-            );
-            res.eqs += ", G: Eq.15, k: Eq.16";
-        }
-        else
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry qSat, sigmaSat or workFunctions is missing in "
-                << dict.name().c_str() << ": one of them gives Gamma"
-                << " (Eq. 17 or Eqs. 14-15)" << exit(FatalIOError);
-        }
+        wallCharging(dict, pI, hasWF, GammaWF, A, res);
     }
 
     if (dict.found("reference"))
@@ -523,50 +569,14 @@ std::string rel(const scalar x, const scalar ref)
     return sci((x - ref)/ref, 10, 2);
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-int main(int argc, char *argv[])
+//- Every experiment of entries (errors named by their entry)
+List<result> evaluateAll
+(
+    const dictionary& entries,
+    const word& areaModel,
+    const fileName& dictFile
+)
 {
-    argList::addNote
-    (
-        "Tribocharging parameters Gamma and kappa_c (Rasera 2022, Eqs. 17-26)"
-        " from single-contact experiments listed in a dictionary."
-    );
-    argList::noParallel();
-    argList::noFunctionObjects();
-    argList::addOption
-    (
-        "dict",
-        "file",
-        "Read this dictionary (any path) instead of"
-        " system/triboParametersDict of the case"
-    );
-
-    argList args(argc, argv);
-
-    const fileName dictFile =
-        args.found("dict")
-      ? args.get<fileName>("dict").expand()
-      : args.path()/"system"/"triboParametersDict";
-
-    IFstream is(dictFile);
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "Cannot open the dictionary " << dictFile << nl
-            << "    Give one with -dict <file>, e.g. the example"
-            << " applications/utilities/triboParameters/"
-            << "triboParametersDict.example"
-            << exit(FatalError);
-    }
-    const dictionary dict(is);
-
-    const word areaModel = dict.getOrDefault<word>("contactAreaModel", "paper");
-    const dictionary& entries = dict.subDict("entries");
-
     List<result> results;
     for (const entry& e : entries)
     {
@@ -597,13 +607,13 @@ int main(int argc, char *argv[])
         FatalError.throwExceptions(throwing);
     }
 
-    if (results.empty())
-    {
-        FatalIOErrorInFunction(entries)
-            << "Dictionary " << entries.name().c_str()
-            << " has no experiments" << exit(FatalIOError);
-    }
+    return results;
+}
 
+
+//- The two tables: contact mechanics and charging parameters
+void printTables(const List<result>& results, const fileName& dictFile)
+{
     Info<< "Dictionary: " << dictFile << nl
         << "eps0 = " << sci(triboCharging::eps0, 0, 10).c_str()
         << " F/m (CODATA 2018)" << nl
@@ -657,6 +667,61 @@ int main(int argc, char *argv[])
         }
         Info<< "    " << r.eqs.c_str() << nl;
     }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Tribocharging parameters Gamma and kappa_c (Rasera 2022, Eqs. 17-26)"
+        " from single-contact experiments listed in a dictionary."
+    );
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::addOption
+    (
+        "dict",
+        "file",
+        "Read this dictionary (any path) instead of"
+        " system/triboParametersDict of the case"
+    );
+
+    argList args(argc, argv);
+
+    const fileName dictFile =
+        args.found("dict")
+      ? args.get<fileName>("dict").expand()
+      : args.path()/"system"/"triboParametersDict";
+
+    IFstream is(dictFile);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open the dictionary " << dictFile << nl
+            << "    Give one with -dict <file>, e.g. the example"
+            << " applications/utilities/triboParameters/"
+            << "triboParametersDict.example"
+            << exit(FatalError);
+    }
+    const dictionary dict(is);
+
+    const word areaModel = dict.getOrDefault<word>("contactAreaModel", "paper");
+    const dictionary& entries = dict.subDict("entries");
+
+    const List<result> results(evaluateAll(entries, areaModel, dictFile));
+    if (results.empty())
+    {
+        FatalIOErrorInFunction(entries)
+            << "Dictionary " << entries.name().c_str()
+            << " has no experiments" << exit(FatalIOError);
+    }
+
+    printTables(results, dictFile);
 
     Info<< nl << "End" << nl << endl;
 
