@@ -229,6 +229,279 @@ void writeVtk
     }
 }
 
+//- What the dictionary asks for
+struct caseSpec
+{
+    scalar kappa0 = 1;
+    vector E0 = Zero;
+    bemSolverControls ctrl;
+    bool interaction = true;
+    bool vtk = true;
+    fileName outDir;
+    List<particleSpec> parts;
+    word sweepType = "none";
+    label sweepP = -1;
+    vector sweepDir = Zero;
+    scalarList values = scalarList(1, 0.0);
+};
+
+
+//- The particles of the dictionary's particles sub-dictionary
+List<particleSpec> readParticles(const dictionary& dict)
+{
+    List<particleSpec> parts;
+    const dictionary& pdict = dict.subDict("particles");
+    for (const entry& e : pdict)
+    {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(pdict)
+                << "entry " << e.keyword() << " of particles is not a"
+                << " dictionary" << exit(FatalIOError);
+        }
+        parts.append(readParticle(e.keyword(), e.dict()));
+    }
+    if (parts.empty())
+    {
+        FatalIOErrorInFunction(pdict) << "no particles" << exit(FatalIOError);
+    }
+
+    return parts;
+}
+
+
+//- The sweep (sub-dictionary sweep; none: one configuration) into cs
+void readSweep(const dictionary& dict, caseSpec& cs)
+{
+    const List<particleSpec>& parts = cs.parts;
+    word& sweepType = cs.sweepType;
+    label& sweepP = cs.sweepP;
+    vector& sweepDir = cs.sweepDir;
+    scalarList& values = cs.values;
+    if (dict.found("sweep"))
+    {
+        const dictionary& sd = dict.subDict("sweep");
+        sweepType = sd.get<word>("type");
+        if (sweepType != "none")
+        {
+            const word pn = sd.get<word>("particle");
+            forAll(parts, i)
+            {
+                if (parts[i].name == pn) sweepP = i;
+            }
+            if (sweepP < 0)
+            {
+                FatalIOErrorInFunction(sd)
+                    << "sweep particle " << pn << " not in particles"
+                    << exit(FatalIOError);
+            }
+            values = sd.get<scalarList>("values");
+            if (sweepType == "translate")
+            {
+                sweepDir = sd.get<vector>("direction");
+            }
+            else if (sweepType == "rotate")
+            {
+                sweepDir = sd.get<vector>("axis");
+            }
+            else
+            {
+                FatalIOErrorInFunction(sd)
+                    << "sweep type " << sweepType << " unknown; allowed:"
+                    << " none translate (value = displacement along"
+                    << " direction) rotate (value = angle [deg] about axis)"
+                    << exit(FatalIOError);
+            }
+            if (mag(sweepDir) == 0)
+            {
+                FatalIOErrorInFunction(sd)
+                    << "zero sweep direction/axis" << exit(FatalIOError);
+            }
+        }
+    }
+
+}
+
+
+//- One configuration (centres c, rotations R) by the model: forces,
+//  torques, energy and interaction energy, GMRES iterations and residual
+//  (the BEM's surface written to surface_<step>.vtk if vtk)
+void evaluateStep
+(
+    const word& model,
+    const caseSpec& cs,
+    bemSolver& bem,
+    const labelList& shapes,
+    const scalarList& charge,
+    const scalar Uself,
+    const List<point>& c,
+    const List<tensor>& R,
+    const label step,
+    List<vector>& F,
+    List<vector>& M,
+    scalar& U,
+    scalar& Uint,
+    label& iters,
+    scalar& resid
+)
+{
+    const List<particleSpec>& parts = cs.parts;
+    const scalar kappa0 = cs.kappa0;
+    const vector& E0 = cs.E0;
+    const bool interaction = cs.interaction;
+    F.setSize(parts.size());
+    M.setSize(parts.size());
+    U = 0;
+    Uint = 0;
+    iters = 0;
+    resid = 0;
+    if (model == "bem")
+    {
+        bem.clearParticles();
+        forAll(parts, i)
+        {
+            bem.addParticle(shapes[i], c[i], R[i], parts[i].kappa, charge[i]);
+        }
+        if (mag(E0) > 0)
+        {
+            bem.setExternalField(E0);
+        }
+        const auto& info = bem.solve();
+        F = bem.forces();
+        M = bem.torques();
+        U = bem.energy();
+        Uint = interaction ? U - Uself : 0;
+        iters = info.iterations;
+        resid = info.residual;
+        if (cs.vtk)
+        {
+            writeVtk
+            (
+                cs.outDir/("surface_" + Foam::name(step) + ".vtk"), bem
+            );
+        }
+    }
+    else
+    {
+        inducedDipole dm(kappa0);
+        forAll(parts, i)
+        {
+            dm.addParticle(c[i], parts[i].semiAxes, R[i], parts[i].kappa, charge[i]);
+        }
+        dm.setExternalField(E0);
+        iters = dm.solve();
+        F = dm.forces();
+        M = dm.torques();
+        U = dm.energy();
+        Uint = U;
+    }
+}
+
+
+//- The sweep by one model, its table to <outputDir>/<model>.dat
+void runModel(const word& model, const caseSpec& cs)
+{
+    const List<particleSpec>& parts = cs.parts;
+    const scalar kappa0 = cs.kappa0;
+    const bool interaction = cs.interaction;
+    const word& sweepType = cs.sweepType;
+    const label sweepP = cs.sweepP;
+    const vector& sweepDir = cs.sweepDir;
+    const scalarList& values = cs.values;
+    const fileName& outDir = cs.outDir;
+    const bemSolverControls& ctrl = cs.ctrl;
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+
+    bemSolver bem(kappa0, ctrl);
+    labelList shapes(parts.size());
+    scalarList charge(parts.size());
+    forAll(parts, i)
+    {
+        const particleSpec& p = parts[i];
+        shapes[i] =
+            bem.shape(p.semiAxes, p.nPatches, p.focus, p.lambda, p.beta);
+        const scalar A = sum(bem.mesh(shapes[i]).areas());
+        charge[i] = p.hasCharge ? p.charge : p.sigmaF*A;
+    }
+
+    // Energies of the particles alone (same mesh), for the interaction
+    // energy U - sum U_i
+    scalar Uself = 0;
+    if (interaction && model == "bem")
+    {
+        forAll(parts, i)
+        {
+            bemSolver one(kappa0, ctrl);
+            const label sh = one.shape
+            (
+                parts[i].semiAxes, parts[i].nPatches, parts[i].focus,
+                parts[i].lambda, parts[i].beta
+            );
+            one.addParticle(sh, parts[i].centre, parts[i].R, parts[i].kappa, charge[i]);
+            one.solve();
+            Uself += one.energy();
+        }
+    }
+
+    OFstream tab(outDir/(model + ".dat"));
+    tab.precision(17);
+    tab << "# bemElectrostatics, model " << model << ", kappa0 "
+        << kappa0 << ", eps0 " << eps0 << nl
+        << "# sweep " << sweepType
+        << (sweepP >= 0 ? (" of " + parts[sweepP].name).c_str() : "")
+        << nl << "# columns: step value energy[J] interactionEnergy[J]";
+    forAll(parts, i)
+    {
+        tab << " " << parts[i].name << ":Fx Fy Fz Mx My Mz";
+    }
+    tab << " iterations residual" << nl;
+
+    Info<< "Model " << model << ": writing " << outDir/(model + ".dat")
+        << nl;
+
+    forAll(values, step)
+    {
+        List<point> c(parts.size());
+        List<tensor> R(parts.size());
+        forAll(parts, i)
+        {
+            c[i] = parts[i].centre;
+            R[i] = parts[i].R;
+        }
+        if (sweepType == "translate")
+        {
+            c[sweepP] += values[step]*sweepDir/mag(sweepDir);
+        }
+        else if (sweepType == "rotate")
+        {
+            R[sweepP] = rotationAbout(sweepDir, values[step]) & R[sweepP];
+        }
+
+        List<vector> F, M;
+        scalar U, Uint, resid;
+        label iters;
+        evaluateStep
+        (
+            model, cs, bem, shapes, charge, Uself, c, R, step,
+            F, M, U, Uint, iters, resid
+        );
+
+        tab << step << ' ' << values[step] << ' ' << U << ' ' << Uint;
+        forAll(parts, i)
+        {
+            tab << ' ' << F[i].x() << ' ' << F[i].y() << ' ' << F[i].z()
+                << ' ' << M[i].x() << ' ' << M[i].y() << ' ' << M[i].z();
+        }
+        tab << ' ' << iters << ' ' << resid << nl;
+
+        Info<< "  step " << step << " value " << values[step]
+            << "  U " << U << "  F[" << parts.last().name << "] "
+            << F.last() << "  M[" << parts.last().name << "] "
+            << M.last() << "  iterations " << iters << nl;
+    }
+}
+
+
 } // End anonymous namespace
 
 
@@ -307,198 +580,19 @@ int main(int argc, char *argv[])
     }
     mkDir(outDir);
 
-    // Particles
-    List<particleSpec> parts;
-    const dictionary& pdict = dict.subDict("particles");
-    for (const entry& e : pdict)
-    {
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(pdict)
-                << "entry " << e.keyword() << " of particles is not a"
-                << " dictionary" << exit(FatalIOError);
-        }
-        parts.append(readParticle(e.keyword(), e.dict()));
-    }
-    if (parts.empty())
-    {
-        FatalIOErrorInFunction(pdict) << "no particles" << exit(FatalIOError);
-    }
-
-    // Sweep
-    word sweepType = "none";
-    label sweepP = -1;
-    vector sweepDir(Zero);
-    scalarList values(1, 0.0);
-    if (dict.found("sweep"))
-    {
-        const dictionary& sd = dict.subDict("sweep");
-        sweepType = sd.get<word>("type");
-        if (sweepType != "none")
-        {
-            const word pn = sd.get<word>("particle");
-            forAll(parts, i)
-            {
-                if (parts[i].name == pn) sweepP = i;
-            }
-            if (sweepP < 0)
-            {
-                FatalIOErrorInFunction(sd)
-                    << "sweep particle " << pn << " not in particles"
-                    << exit(FatalIOError);
-            }
-            values = sd.get<scalarList>("values");
-            if (sweepType == "translate")
-            {
-                sweepDir = sd.get<vector>("direction");
-            }
-            else if (sweepType == "rotate")
-            {
-                sweepDir = sd.get<vector>("axis");
-            }
-            else
-            {
-                FatalIOErrorInFunction(sd)
-                    << "sweep type " << sweepType << " unknown; allowed:"
-                    << " none translate (value = displacement along"
-                    << " direction) rotate (value = angle [deg] about axis)"
-                    << exit(FatalIOError);
-            }
-            if (mag(sweepDir) == 0)
-            {
-                FatalIOErrorInFunction(sd)
-                    << "zero sweep direction/axis" << exit(FatalIOError);
-            }
-        }
-    }
-
-    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    caseSpec cs;
+    cs.kappa0 = kappa0;
+    cs.E0 = E0;
+    cs.ctrl = ctrl;
+    cs.interaction = interaction;
+    cs.vtk = vtk;
+    cs.outDir = outDir;
+    cs.parts = readParticles(dict);
+    readSweep(dict, cs);
 
     for (const word& model : models)
     {
-        bemSolver bem(kappa0, ctrl);
-        labelList shapes(parts.size());
-        scalarList charge(parts.size());
-        forAll(parts, i)
-        {
-            const particleSpec& p = parts[i];
-            shapes[i] =
-                bem.shape(p.semiAxes, p.nPatches, p.focus, p.lambda, p.beta);
-            const scalar A = sum(bem.mesh(shapes[i]).areas());
-            charge[i] = p.hasCharge ? p.charge : p.sigmaF*A;
-        }
-
-        // Energies of the particles alone (same mesh), for the interaction
-        // energy U - sum U_i
-        scalar Uself = 0;
-        if (interaction && model == "bem")
-        {
-            forAll(parts, i)
-            {
-                bemSolver one(kappa0, ctrl);
-                const label sh = one.shape
-                (
-                    parts[i].semiAxes, parts[i].nPatches, parts[i].focus,
-                    parts[i].lambda, parts[i].beta
-                );
-                one.addParticle(sh, parts[i].centre, parts[i].R, parts[i].kappa, charge[i]);
-                one.solve();
-                Uself += one.energy();
-            }
-        }
-
-        OFstream tab(outDir/(model + ".dat"));
-        tab.precision(17);
-        tab << "# bemElectrostatics, model " << model << ", kappa0 "
-            << kappa0 << ", eps0 " << eps0 << nl
-            << "# sweep " << sweepType
-            << (sweepP >= 0 ? (" of " + parts[sweepP].name).c_str() : "")
-            << nl << "# columns: step value energy[J] interactionEnergy[J]";
-        forAll(parts, i)
-        {
-            tab << " " << parts[i].name << ":Fx Fy Fz Mx My Mz";
-        }
-        tab << " iterations residual" << nl;
-
-        Info<< "Model " << model << ": writing " << outDir/(model + ".dat")
-            << nl;
-
-        forAll(values, step)
-        {
-            List<point> c(parts.size());
-            List<tensor> R(parts.size());
-            forAll(parts, i)
-            {
-                c[i] = parts[i].centre;
-                R[i] = parts[i].R;
-            }
-            if (sweepType == "translate")
-            {
-                c[sweepP] += values[step]*sweepDir/mag(sweepDir);
-            }
-            else if (sweepType == "rotate")
-            {
-                R[sweepP] = rotationAbout(sweepDir, values[step]) & R[sweepP];
-            }
-
-            List<vector> F(parts.size()), M(parts.size());
-            scalar U = 0, Uint = 0;
-            label iters = 0;
-            scalar resid = 0;
-            if (model == "bem")
-            {
-                bem.clearParticles();
-                forAll(parts, i)
-                {
-                    bem.addParticle(shapes[i], c[i], R[i], parts[i].kappa, charge[i]);
-                }
-                if (mag(E0) > 0)
-                {
-                    bem.setExternalField(E0);
-                }
-                const auto& info = bem.solve();
-                F = bem.forces();
-                M = bem.torques();
-                U = bem.energy();
-                Uint = interaction ? U - Uself : 0;
-                iters = info.iterations;
-                resid = info.residual;
-                if (vtk)
-                {
-                    writeVtk
-                    (
-                        outDir/("surface_" + Foam::name(step) + ".vtk"), bem
-                    );
-                }
-            }
-            else
-            {
-                inducedDipole dm(kappa0);
-                forAll(parts, i)
-                {
-                    dm.addParticle(c[i], parts[i].semiAxes, R[i], parts[i].kappa, charge[i]);
-                }
-                dm.setExternalField(E0);
-                iters = dm.solve();
-                F = dm.forces();
-                M = dm.torques();
-                U = dm.energy();
-                Uint = U;
-            }
-
-            tab << step << ' ' << values[step] << ' ' << U << ' ' << Uint;
-            forAll(parts, i)
-            {
-                tab << ' ' << F[i].x() << ' ' << F[i].y() << ' ' << F[i].z()
-                    << ' ' << M[i].x() << ' ' << M[i].y() << ' ' << M[i].z();
-            }
-            tab << ' ' << iters << ' ' << resid << nl;
-
-            Info<< "  step " << step << " value " << values[step]
-                << "  U " << U << "  F[" << parts.last().name << "] "
-                << F.last() << "  M[" << parts.last().name << "] "
-                << M.last() << "  iterations " << iters << nl;
-        }
+        runModel(model, cs);
     }
 
     Info<< "End" << nl;

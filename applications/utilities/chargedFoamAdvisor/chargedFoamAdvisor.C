@@ -42,7 +42,8 @@ Usage
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-int main(int argc, char *argv[])
+//- The command line
+void addOptions()
 {
     argList::addNote
     (
@@ -80,6 +81,51 @@ int main(int argc, char *argv[])
         "n",
         "timed evaluations per rung (median); default 3"
     );
+}
+
+
+//- The survey's table to postProcessing/advisor/<time>/rungs.dat and its
+//  plot (the master)
+template<class Survey>
+void writeRungs(const Survey& survey, const Time& runTime)
+{
+    if (Pstream::master())
+    {
+        const fileName dir
+        (
+            runTime.globalPath()/"postProcessing"/"advisor"
+           /runTime.timeName()
+        );
+        mkDir(dir);
+        {
+            OFstream os(dir/"rungs.dat");
+            survey.writeTable(os);
+        }
+        Info<< "Table written to " << dir/"rungs.dat" << endl;
+        const fileName plot
+        (
+            getEnv("CHARGEDFOAM_DIR")/"etc"/"python"/"plotRungs.py"
+        );
+        // Debian's python3 has matplotlib (etc/setup installs it)
+        const fileName py
+        (
+            isFile("/usr/bin/python3") ? "/usr/bin/python3" : "python3"
+        );
+        if (isFile(plot))
+        {
+            Foam::system
+            (
+                py + " " + plot + " " + dir/"rungs.dat" + " "
+              + dir/"rungs.png"
+            );
+        }
+    }
+}
+
+
+int main(int argc, char *argv[])
+{
+    addOptions();
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -162,37 +208,7 @@ int main(int argc, char *argv[])
             survey.run(parcels.subModelProperties());
             survey.write(Info);
 
-            if (Pstream::master())
-            {
-                const fileName dir
-                (
-                    runTime.globalPath()/"postProcessing"/"advisor"
-                   /runTime.timeName()
-                );
-                mkDir(dir);
-                {
-                    OFstream os(dir/"rungs.dat");
-                    survey.writeTable(os);
-                }
-                Info<< "Table written to " << dir/"rungs.dat" << endl;
-                const fileName plot
-                (
-                    getEnv("CHARGEDFOAM_DIR")/"etc"/"python"/"plotRungs.py"
-                );
-                // Debian's python3 has matplotlib (etc/setup installs it)
-                const fileName py
-                (
-                    isFile("/usr/bin/python3") ? "/usr/bin/python3" : "python3"
-                );
-                if (isFile(plot))
-                {
-                    Foam::system
-                    (
-                        py + " " + plot + " " + dir/"rungs.dat" + " "
-                      + dir/"rungs.png"
-                    );
-                }
-            }
+            writeRungs(survey, runTime);
             Info<< endl;
         }
     }
