@@ -452,13 +452,10 @@ inline bool fpeRaised()
 }
 
 
-row benchmark(const population& pop, scalar& checksum)
+//- The untimed statistics of the population into r
+void statistics(const population& pop, row& r)
 {
     using namespace ellipsoidContact;
-
-    row r;
-    r.name = pop.name;
-    r.nPairs = pop.pairs.size();
 
     // Statistics, untimed
     label nRobust = 0, nRobustBad = 0, nPoly = 0, nPolyBad = 0;
@@ -534,6 +531,14 @@ row benchmark(const population& pop, scalar& checksum)
         std::sort(errors.begin(), errors.end());
         r.overlapError = errors[errors.size()/2];
     }
+}
+
+
+//- The kernels' median times per pair into r (the checksum keeps the
+//  compiler from dropping the calls)
+void timings(const population& pop, row& r, scalar& checksum)
+{
+    using namespace ellipsoidContact;
 
     // Timings: one warm-up pass per kernel (rep = -1), then nRepeat
     // rounds, each kernel once per round (interleaved, so a change of the
@@ -621,7 +626,16 @@ row benchmark(const population& pop, scalar& checksum)
     {
         r.tOnset = median(tO);
     }
+}
 
+
+row benchmark(const population& pop, scalar& checksum)
+{
+    row r;
+    r.name = pop.name;
+    r.nPairs = pop.pairs.size();
+    statistics(pop, r);
+    timings(pop, r, checksum);
     return r;
 }
 
@@ -710,56 +724,9 @@ std::string fmtFraction(const scalar f, const label n)
     return buf;
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-int main(int argc, char *argv[])
+//- The report's header: command, machine, build, timing method
+void printHeader(const label nPairs, const label seed, const bool trapRequested)
 {
-    argList::addNote
-    (
-        "Benchmark of the narrow-phase contact kernels (ellipsoidContact):"
-        " time per pair of intersect, contact (automatic, sphere, robust,"
-        " polynomial) and ellipsoidPlane for spheres, ellipsoids of aspect"
-        " ratio 2, 5, 10 and separated pairs."
-    );
-    argList::noBanner();
-    argList::noParallel();
-    argList::noFunctionObjects();
-    argList::removeOption("case");
-    argList::addOption
-    (
-        "pairs",
-        "N",
-        "pairs per population (default 10000)"
-    );
-    argList::addOption
-    (
-        "seed",
-        "S",
-        "seed of the pair populations (default 1)"
-    );
-
-    argList args(argc, argv);
-
-    // Floating-point exception trapping (trapFpe in etc/controlDict,
-    // FOAM_SIGFPE) is switched off: the kernels test their results with
-    // std::isfinite, and the polynomial method divides by zero for some
-    // pairs (e.g. spheres). The exceptions raised are counted instead.
-    const bool trapRequested = sigFpe::requested();
-    sigFpe::unset(false);
-
-    const label nPairs = args.getOrDefault<label>("pairs", 10000);
-    const label seed = args.getOrDefault<label>("seed", 1);
-
-    if (nPairs < 1)
-    {
-        FatalErrorInFunction
-            << "-pairs " << nPairs << ": needs at least 1 pair"
-            << exit(FatalError);
-    }
-
     std::printf("## narrowPhaseBenchmark\n\n");
     std::printf("- command: narrowPhaseBenchmark -pairs %d -seed %d\n",
         int(nPairs), int(seed));
@@ -778,28 +745,12 @@ int main(int argc, char *argv[])
         " one warm-up sweep, kernels interleaved, single thread\n\n",
         int(nRepeat), 1e-6*minPass);
     std::fflush(stdout);
+}
 
-    // Populations, built once before any timing
-    const std::chrono::steady_clock::time_point t0 =
-        std::chrono::steady_clock::now();
 
-    rng_t g(seed);
-    std::vector<population> pops;
-    pops.push_back(makePopulation("spheres", 1, false, nPairs, g));
-    pops.push_back(makePopulation("AR 2, overlapping", 2, false, nPairs, g));
-    pops.push_back(makePopulation("AR 5, overlapping", 5, false, nPairs, g));
-    pops.push_back(makePopulation("AR 10, overlapping", 10, false, nPairs, g));
-    pops.push_back(makePopulation("AR 2, separated", 2, true, nPairs, g));
-    pops.push_back(makePopulation("AR 5, separated", 5, true, nPairs, g));
-    pops.push_back(makePopulation("AR 10, separated", 10, true, nPairs, g));
-
-    scalar checksum = 0;
-    std::vector<row> rows;
-    for (const population& pop : pops)
-    {
-        rows.push_back(benchmark(pop, checksum));
-    }
-
+//- The time tables: per pair, ratios to the sphere path, gradR, onset
+void printTimes(const std::vector<row>& rows)
+{
     const scalar ref = rows[0].tAutomatic;
 
     std::printf("CPU time per pair [ns]:\n\n");
@@ -875,7 +826,12 @@ int main(int argc, char *argv[])
                 2*r.tOnset/ref/50);
         }
     }
+}
 
+
+//- The untimed checks of the populations
+void printChecks(const std::vector<row>& rows)
+{
     std::printf("\nChecks of the populations (untimed; fractions of"
         " pairs):\n\n");
     std::printf("| population | intersect() agrees with construction"
@@ -896,6 +852,84 @@ int main(int argc, char *argv[])
             r.fpeIntersect, r.fpeAutomatic, r.fpeRobust, r.fpePolynomial,
             r.fpePlane);
     }
+}
+
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Benchmark of the narrow-phase contact kernels (ellipsoidContact):"
+        " time per pair of intersect, contact (automatic, sphere, robust,"
+        " polynomial) and ellipsoidPlane for spheres, ellipsoids of aspect"
+        " ratio 2, 5, 10 and separated pairs."
+    );
+    argList::noBanner();
+    argList::noParallel();
+    argList::noFunctionObjects();
+    argList::removeOption("case");
+    argList::addOption
+    (
+        "pairs",
+        "N",
+        "pairs per population (default 10000)"
+    );
+    argList::addOption
+    (
+        "seed",
+        "S",
+        "seed of the pair populations (default 1)"
+    );
+
+    argList args(argc, argv);
+
+    // Floating-point exception trapping (trapFpe in etc/controlDict,
+    // FOAM_SIGFPE) is switched off: the kernels test their results with
+    // std::isfinite, and the polynomial method divides by zero for some
+    // pairs (e.g. spheres). The exceptions raised are counted instead.
+    const bool trapRequested = sigFpe::requested();
+    sigFpe::unset(false);
+
+    const label nPairs = args.getOrDefault<label>("pairs", 10000);
+    const label seed = args.getOrDefault<label>("seed", 1);
+
+    if (nPairs < 1)
+    {
+        FatalErrorInFunction
+            << "-pairs " << nPairs << ": needs at least 1 pair"
+            << exit(FatalError);
+    }
+
+    printHeader(nPairs, seed, trapRequested);
+
+    // Populations, built once before any timing
+    const std::chrono::steady_clock::time_point t0 =
+        std::chrono::steady_clock::now();
+
+    rng_t g(seed);
+    std::vector<population> pops;
+    pops.push_back(makePopulation("spheres", 1, false, nPairs, g));
+    pops.push_back(makePopulation("AR 2, overlapping", 2, false, nPairs, g));
+    pops.push_back(makePopulation("AR 5, overlapping", 5, false, nPairs, g));
+    pops.push_back(makePopulation("AR 10, overlapping", 10, false, nPairs, g));
+    pops.push_back(makePopulation("AR 2, separated", 2, true, nPairs, g));
+    pops.push_back(makePopulation("AR 5, separated", 5, true, nPairs, g));
+    pops.push_back(makePopulation("AR 10, separated", 10, true, nPairs, g));
+
+    scalar checksum = 0;
+    std::vector<row> rows;
+    for (const population& pop : pops)
+    {
+        rows.push_back(benchmark(pop, checksum));
+    }
+
+    printTimes(rows);
+    printChecks(rows);
 
     const scalar seconds = std::chrono::duration<scalar>
     (
