@@ -352,6 +352,256 @@ void sphereSet
     }
 }
 
+//- Section 1: 1. patches per particle
+void patchesPerParticle(const bool quick)
+{
+    std::vector<label> ns =
+        quick ? std::vector<label>{100, 392, 1000}
+      : std::vector<label>{100, 200, 392, 800, 1600, 3200, 5000};
+    std::printf
+    (
+        "\n## 1. Two spheres, gap 0.5R, kappa_p 10: time vs patches per"
+        " particle n\n\n| n | N |%s", header3
+    );
+    const bemMatvecMethod mvs[3] =
+    {
+        bemMatvecMethod::direct, bemMatvecMethod::treecode,
+        bemMatvecMethod::fmm
+    };
+    std::vector<solvedCase> cases;
+    for (const label n : ns)
+    {
+        for (const bemMatvecMethod mv : mvs)
+        {
+            cases.push_back(solveSpheres(2, n, 0.5, mv, true));
+        }
+    }
+    timeInRounds(cases);
+    std::vector<scalar> x, td, tt, tf;
+    for (size_t i = 0; i < ns.size(); ++i)
+    {
+        const label n = ns[i];
+        const run& d = cases[3*i].r;
+        const run& t = cases[3*i + 1].r;
+        const run& f = cases[3*i + 2].r;
+        std::printf("| %d | %d |", n, 2*n);
+        printRuns(d, t, f);
+        // Fit over n >= 392 (smaller n: fixed costs dominate)
+        if (n >= 392)
+        {
+            x.push_back(n);
+            td.push_back(d.perMatvec);
+            tt.push_back(t.perMatvec);
+            tf.push_back(f.perMatvec);
+        }
+    }
+    std::printf
+    (
+        "\nFitted exponent of the median matvec time vs n (n >= 392):"
+        " direct %.3f, treecode %.3f, FMM %.3f (Ruan: GMRES alone 2,"
+        " FMM 1.564)\n", slope(x, td), slope(x, tt), slope(x, tf)
+    );
+}
+
+
+//- Section 1b: 1b. larger n, fast sums only (the direct sum would take minutes)
+void largerPatchCounts()
+{
+    std::printf
+    (
+        "\n## 1b. Two spheres, gap 0.5R: treecode and FMM, larger n\n\n"
+        "| n | N | treecode: s/matvec (median) | s/iter (GMRES) | s/solve |"
+        " iters | FMM: s/matvec (median) | s/iter (GMRES) | s/solve |"
+        " iters |\n|---|---|---|---|---|---|---|---|---|---|\n"
+    );
+    const std::vector<label> ns{1600, 5000, 10000, 20000};
+    std::vector<solvedCase> cases;
+    for (const label n : ns)
+    {
+        cases.push_back
+        (
+            solveSpheres(2, n, 0.5, bemMatvecMethod::treecode, true)
+        );
+        cases.push_back(solveSpheres(2, n, 0.5, bemMatvecMethod::fmm, true));
+    }
+    timeInRounds(cases);
+    std::vector<scalar> x, tt, tf;
+    for (size_t i = 0; i < ns.size(); ++i)
+    {
+        const run& t = cases[2*i].r;
+        const run& f = cases[2*i + 1].r;
+        std::printf("| %d | %d |", ns[i], 2*ns[i]);
+        for (const run* r : {&t, &f})
+        {
+            std::printf
+            (
+                " %.3e | %.3e | %.3e | %d |", r->perMatvec, r->perIter,
+                r->perSolve, r->iterations
+            );
+        }
+        std::printf("\n");
+        std::fflush(stdout);
+        x.push_back(ns[i]);
+        tt.push_back(t.perMatvec);
+        tf.push_back(f.perMatvec);
+    }
+    std::printf
+    (
+        "\nFitted exponent of the matvec time vs n (n = 1600..20000):"
+        " treecode %.3f, FMM %.3f\n", slope(x, tt), slope(x, tf)
+    );
+}
+
+
+//- Section 2: 2. particle number
+void particleNumber(const bool quick)
+{
+    std::vector<label> nps =
+        quick ? std::vector<label>{2, 5, 10}
+      : std::vector<label>{2, 5, 10, 20, 50, 100};
+    std::printf
+    (
+        "\n## 2. Np spheres in a row, n = 392, gap 0.2R, kappa_p 10:"
+        " time vs Np\n\n| Np | N |%s", header3
+    );
+    const bemMatvecMethod mvs[3] =
+    {
+        bemMatvecMethod::direct, bemMatvecMethod::treecode,
+        bemMatvecMethod::fmm
+    };
+    std::vector<solvedCase> cases;
+    for (const label np : nps)
+    {
+        for (const bemMatvecMethod mv : mvs)
+        {
+            cases.push_back(solveSpheres(np, 392, 0.2, mv, true));
+        }
+    }
+    timeInRounds(cases);
+    std::vector<scalar> x, td, tt, tf;
+    for (size_t i = 0; i < nps.size(); ++i)
+    {
+        const label np = nps[i];
+        const run& d = cases[3*i].r;
+        const run& t = cases[3*i + 1].r;
+        const run& f = cases[3*i + 2].r;
+        std::printf("| %d | %d |", np, 392*np);
+        printRuns(d, t, f);
+        x.push_back(np);
+        td.push_back(d.perMatvec);
+        tt.push_back(t.perMatvec);
+        tf.push_back(f.perMatvec);
+    }
+    std::printf
+    (
+        "\nFitted exponent of the median matvec time vs Np: direct"
+        " %.3f, treecode %.3f, FMM %.3f (Ruan: GMRES alone 2, FMM"
+        " 1.333)\n", slope(x, td), slope(x, tt), slope(x, tf)
+    );
+}
+
+
+//- Section 3: 3. preconditioner
+void preconditioner()
+{
+    std::printf
+    (
+        "\n## 3. GMRES iterations (tolerance 1e-4): block-diagonal (self"
+        " block LU) against diagonal (Jacobi) preconditioning, n = 392\n\n"
+        "| case | kappa_p | block LU | diagonal |\n|---|---|---|---|\n"
+    );
+    for (const scalar kp : {10.0, 100.0})
+    {
+        for (const label np : {2, 20})
+        {
+            const scalar gap = np == 2 ? 0.1 : 0.2;
+            const bemMatvecMethod mv = bemSolverControls().matvec;
+            const run a = spheres(np, 392, gap, mv, true, kp);
+            const run b = spheres(np, 392, gap, mv, false, kp);
+            std::printf
+            (
+                "| %d spheres, gap %.1fR | %g | %d | %d |\n",
+                np, gap, kp, a.iterations, b.iterations
+            );
+            std::fflush(stdout);
+        }
+    }
+}
+
+
+//- Section 4: 4. accuracy vs cost, App. A
+void accuracyVsCost(const bool quick)
+{
+    const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
+    std::printf
+    (
+        "\n## 4. Accuracy vs cost, Ruan App. A (point charge + sphere,"
+        " kappa ratio 10)\n\n"
+        "| d/R | mesh | n | rel. error of U | s/solve (incl. meshing and set-up) |\n"
+        "|---|---|---|---|---|\n"
+    );
+    std::vector<label> ns =
+        quick ? std::vector<label>{250, 1000}
+      : std::vector<label>{100, 250, 500, 1000, 2000};
+    for (const scalar dR : {0.05, 0.5})
+    {
+        for (const label graded : {0, 1})
+        {
+            for (const label n : ns)
+            {
+                cpuTime ct;
+                bemSolver s(1);
+                const scalar lam =
+                    graded ? min(1.0, 0.6*Foam::sqrt(dR)) : 1.0;
+                const label sh =
+                    s.shape(vector(1, 1, 1), n, vector(1, 0, 0), lam);
+                s.addParticle(sh, point::zero, tensor::I, 10, 0.0);
+                s.addPointCharge(point(1 + dR, 0, 0), 1.0);
+                s.solve();
+                const scalar err =
+                    s.energy()*eps0/imageSeries(10, dR) - 1;
+                std::printf
+                (
+                    "| %.2f | %s | %d | %+.2e | %.3f |\n", dR,
+                    graded ? "graded" : "uniform", n, err,
+                    ct.elapsedCpuTime()
+                );
+                std::fflush(stdout);
+            }
+        }
+    }
+}
+
+
+//- Section 5: 5. accuracy and cost of the fast sums alone
+void fastSums(const bool quick)
+{
+    const std::vector<label> orders =
+        quick ? std::vector<label>{3, 5} : std::vector<label>{2, 3, 4, 5, 6, 8};
+    const std::vector<scalar> thetas =
+        quick ? std::vector<scalar>{0.5} : std::vector<scalar>{0.4, 0.5, 0.6};
+    pointField x;
+    vectorField nrm;
+    scalarField qs, qr;
+    std::printf
+    (
+        "\n## 5. Fast sums against the direct sum: relative L2 error"
+        " and CPU time per evaluation (field only)\n\n"
+        "### 5a. One sphere, n = 1600, smooth sigma = cos t\n\n"
+    );
+    sphereSet(1, 1600, 0, x, nrm, qs, qr);
+    fastSumTable(x, nrm, qs, qr, orders, thetas);
+    const label n = quick ? 1600 : 5000;
+    std::printf
+    (
+        "\n### 5b. Two spheres, gap 0.5R, n = %d each, smooth sigma ="
+        " +-cos t\n\n", n
+    );
+    sphereSet(2, n, 0.5, x, nrm, qs, qr);
+    fastSumTable(x, nrm, qs, qr, orders, thetas);
+}
+
+
 } // namespace
 
 
@@ -373,245 +623,37 @@ int main(int argc, char *argv[])
     // 1. patches per particle
     if (section("1"))
     {
-        std::vector<label> ns =
-            quick ? std::vector<label>{100, 392, 1000}
-          : std::vector<label>{100, 200, 392, 800, 1600, 3200, 5000};
-        std::printf
-        (
-            "\n## 1. Two spheres, gap 0.5R, kappa_p 10: time vs patches per"
-            " particle n\n\n| n | N |%s", header3
-        );
-        const bemMatvecMethod mvs[3] =
-        {
-            bemMatvecMethod::direct, bemMatvecMethod::treecode,
-            bemMatvecMethod::fmm
-        };
-        std::vector<solvedCase> cases;
-        for (const label n : ns)
-        {
-            for (const bemMatvecMethod mv : mvs)
-            {
-                cases.push_back(solveSpheres(2, n, 0.5, mv, true));
-            }
-        }
-        timeInRounds(cases);
-        std::vector<scalar> x, td, tt, tf;
-        for (size_t i = 0; i < ns.size(); ++i)
-        {
-            const label n = ns[i];
-            const run& d = cases[3*i].r;
-            const run& t = cases[3*i + 1].r;
-            const run& f = cases[3*i + 2].r;
-            std::printf("| %d | %d |", n, 2*n);
-            printRuns(d, t, f);
-            // Fit over n >= 392 (smaller n: fixed costs dominate)
-            if (n >= 392)
-            {
-                x.push_back(n);
-                td.push_back(d.perMatvec);
-                tt.push_back(t.perMatvec);
-                tf.push_back(f.perMatvec);
-            }
-        }
-        std::printf
-        (
-            "\nFitted exponent of the median matvec time vs n (n >= 392):"
-            " direct %.3f, treecode %.3f, FMM %.3f (Ruan: GMRES alone 2,"
-            " FMM 1.564)\n", slope(x, td), slope(x, tt), slope(x, tf)
-        );
+        patchesPerParticle(quick);
     }
 
     // 1b. larger n, fast sums only (the direct sum would take minutes)
     if (!quick && section("1b"))
     {
-        std::printf
-        (
-            "\n## 1b. Two spheres, gap 0.5R: treecode and FMM, larger n\n\n"
-            "| n | N | treecode: s/matvec (median) | s/iter (GMRES) | s/solve |"
-            " iters | FMM: s/matvec (median) | s/iter (GMRES) | s/solve |"
-            " iters |\n|---|---|---|---|---|---|---|---|---|---|\n"
-        );
-        const std::vector<label> ns{1600, 5000, 10000, 20000};
-        std::vector<solvedCase> cases;
-        for (const label n : ns)
-        {
-            cases.push_back
-            (
-                solveSpheres(2, n, 0.5, bemMatvecMethod::treecode, true)
-            );
-            cases.push_back(solveSpheres(2, n, 0.5, bemMatvecMethod::fmm, true));
-        }
-        timeInRounds(cases);
-        std::vector<scalar> x, tt, tf;
-        for (size_t i = 0; i < ns.size(); ++i)
-        {
-            const run& t = cases[2*i].r;
-            const run& f = cases[2*i + 1].r;
-            std::printf("| %d | %d |", ns[i], 2*ns[i]);
-            for (const run* r : {&t, &f})
-            {
-                std::printf
-                (
-                    " %.3e | %.3e | %.3e | %d |", r->perMatvec, r->perIter,
-                    r->perSolve, r->iterations
-                );
-            }
-            std::printf("\n");
-            std::fflush(stdout);
-            x.push_back(ns[i]);
-            tt.push_back(t.perMatvec);
-            tf.push_back(f.perMatvec);
-        }
-        std::printf
-        (
-            "\nFitted exponent of the matvec time vs n (n = 1600..20000):"
-            " treecode %.3f, FMM %.3f\n", slope(x, tt), slope(x, tf)
-        );
+        largerPatchCounts();
     }
 
     // 2. particle number
     if (section("2"))
     {
-        std::vector<label> nps =
-            quick ? std::vector<label>{2, 5, 10}
-          : std::vector<label>{2, 5, 10, 20, 50, 100};
-        std::printf
-        (
-            "\n## 2. Np spheres in a row, n = 392, gap 0.2R, kappa_p 10:"
-            " time vs Np\n\n| Np | N |%s", header3
-        );
-        const bemMatvecMethod mvs[3] =
-        {
-            bemMatvecMethod::direct, bemMatvecMethod::treecode,
-            bemMatvecMethod::fmm
-        };
-        std::vector<solvedCase> cases;
-        for (const label np : nps)
-        {
-            for (const bemMatvecMethod mv : mvs)
-            {
-                cases.push_back(solveSpheres(np, 392, 0.2, mv, true));
-            }
-        }
-        timeInRounds(cases);
-        std::vector<scalar> x, td, tt, tf;
-        for (size_t i = 0; i < nps.size(); ++i)
-        {
-            const label np = nps[i];
-            const run& d = cases[3*i].r;
-            const run& t = cases[3*i + 1].r;
-            const run& f = cases[3*i + 2].r;
-            std::printf("| %d | %d |", np, 392*np);
-            printRuns(d, t, f);
-            x.push_back(np);
-            td.push_back(d.perMatvec);
-            tt.push_back(t.perMatvec);
-            tf.push_back(f.perMatvec);
-        }
-        std::printf
-        (
-            "\nFitted exponent of the median matvec time vs Np: direct"
-            " %.3f, treecode %.3f, FMM %.3f (Ruan: GMRES alone 2, FMM"
-            " 1.333)\n", slope(x, td), slope(x, tt), slope(x, tf)
-        );
+        particleNumber(quick);
     }
 
     // 3. preconditioner
     if (section("3"))
     {
-        std::printf
-        (
-            "\n## 3. GMRES iterations (tolerance 1e-4): block-diagonal (self"
-            " block LU) against diagonal (Jacobi) preconditioning, n = 392\n\n"
-            "| case | kappa_p | block LU | diagonal |\n|---|---|---|---|\n"
-        );
-        for (const scalar kp : {10.0, 100.0})
-        {
-            for (const label np : {2, 20})
-            {
-                const scalar gap = np == 2 ? 0.1 : 0.2;
-                const bemMatvecMethod mv = bemSolverControls().matvec;
-                const run a = spheres(np, 392, gap, mv, true, kp);
-                const run b = spheres(np, 392, gap, mv, false, kp);
-                std::printf
-                (
-                    "| %d spheres, gap %.1fR | %g | %d | %d |\n",
-                    np, gap, kp, a.iterations, b.iterations
-                );
-                std::fflush(stdout);
-            }
-        }
+        preconditioner();
     }
 
     // 4. accuracy vs cost, App. A
     if (section("4"))
     {
-        const scalar eps0 = pairwiseCoulomb::vacuumPermittivity;
-        std::printf
-        (
-            "\n## 4. Accuracy vs cost, Ruan App. A (point charge + sphere,"
-            " kappa ratio 10)\n\n"
-            "| d/R | mesh | n | rel. error of U | s/solve (incl. meshing and set-up) |\n"
-            "|---|---|---|---|---|\n"
-        );
-        std::vector<label> ns =
-            quick ? std::vector<label>{250, 1000}
-          : std::vector<label>{100, 250, 500, 1000, 2000};
-        for (const scalar dR : {0.05, 0.5})
-        {
-            for (const label graded : {0, 1})
-            {
-                for (const label n : ns)
-                {
-                    cpuTime ct;
-                    bemSolver s(1);
-                    const scalar lam =
-                        graded ? min(1.0, 0.6*Foam::sqrt(dR)) : 1.0;
-                    const label sh =
-                        s.shape(vector(1, 1, 1), n, vector(1, 0, 0), lam);
-                    s.addParticle(sh, point::zero, tensor::I, 10, 0.0);
-                    s.addPointCharge(point(1 + dR, 0, 0), 1.0);
-                    s.solve();
-                    const scalar err =
-                        s.energy()*eps0/imageSeries(10, dR) - 1;
-                    std::printf
-                    (
-                        "| %.2f | %s | %d | %+.2e | %.3f |\n", dR,
-                        graded ? "graded" : "uniform", n, err,
-                        ct.elapsedCpuTime()
-                    );
-                    std::fflush(stdout);
-                }
-            }
-        }
+        accuracyVsCost(quick);
     }
 
     // 5. accuracy and cost of the fast sums alone
     if (section("5"))
     {
-        const std::vector<label> orders =
-            quick ? std::vector<label>{3, 5} : std::vector<label>{2, 3, 4, 5, 6, 8};
-        const std::vector<scalar> thetas =
-            quick ? std::vector<scalar>{0.5} : std::vector<scalar>{0.4, 0.5, 0.6};
-        pointField x;
-        vectorField nrm;
-        scalarField qs, qr;
-        std::printf
-        (
-            "\n## 5. Fast sums against the direct sum: relative L2 error"
-            " and CPU time per evaluation (field only)\n\n"
-            "### 5a. One sphere, n = 1600, smooth sigma = cos t\n\n"
-        );
-        sphereSet(1, 1600, 0, x, nrm, qs, qr);
-        fastSumTable(x, nrm, qs, qr, orders, thetas);
-        const label n = quick ? 1600 : 5000;
-        std::printf
-        (
-            "\n### 5b. Two spheres, gap 0.5R, n = %d each, smooth sigma ="
-            " +-cos t\n\n", n
-        );
-        sphereSet(2, n, 0.5, x, nrm, qs, qr);
-        fastSumTable(x, nrm, qs, qr, orders, thetas);
+        fastSums(quick);
     }
 
     return 0;
