@@ -233,6 +233,435 @@ lammpsResult runLammps
     return r;
 }
 
+//- The benchmark's settings
+struct settings
+{
+    scalar accuracy;
+    label seed;
+    label maxDirect;
+    label maxPseudo;
+    fileName runs;
+    std::string lmp;
+    vector L;
+    scalar Q;
+};
+
+
+//- N charges Q at random in the box [0, L) (the sequence of rnd)
+void makeCloud
+(
+    const label N,
+    Random& rnd,
+    const vector& L,
+    const scalar Q,
+    pointField& x,
+    scalarField& q
+)
+{
+    x.setSize(N);
+    q.setSize(N);
+    q = Q;
+    for (label i = 0; i < N; ++i)
+    {
+        x[i] = cmptMultiply
+        (
+            L,
+            vector
+            (
+                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            )
+        );
+    }
+}
+
+
+//- p3m only: time and estimated error for the cutoffs rcs at N charges
+void sweepCutoffs(const settings& s, const label N, const scalarList& rcs)
+{
+    const scalar Q = s.Q;
+    const vector& L = s.L;
+    const scalar accuracy = s.accuracy;
+    Random rnd(s.seed);
+    pointField x;
+    scalarField q;
+    makeCloud(N, rnd, L, Q, x, q);
+    std::printf("| rc | alpha | mesh | est. error/target | real [s] |"
+        " kspace [s] | total [s] |\n|---|---|---|---|---|---|---|\n");
+    for (const scalar rc : rcs)
+    {
+        dictionary dict;
+        dict.add("L", L);
+        dict.add("accuracy", accuracy);
+        dict.add("rCut", rc);
+        const p3m pm(dict);
+        pm.tune(N, N*Q*Q);
+        List<vector> f;
+        double tr = GREAT, tk = GREAT, tt = GREAT;
+        for (int r = 0; r < 3; ++r)
+        {
+            const double t0 = now();
+            pm.compute(x, q, f);
+            tt = std::min(tt, now() - t0);
+            tr = std::min(tr, double(pm.timeReal_));
+            tk = std::min(tk, double(pm.timeKspace_));
+        }
+        const p3m::parameters& p = pm.params();
+        std::printf("| %.4g | %.4g | %d | %.3g | %.4g | %.4g | %.4g |\n",
+            p.rCut, p.alpha, int(p.mesh[0]), p.error/p.target, tr, tk,
+            tt);
+    }
+}
+
+
+//- The Ewald reference: on all charges, or on a random subset of targets
+//  (N > 5000) drawn from rnd; its row first in rows
+void ewaldReference
+(
+    const vector& L,
+    Random& rnd,
+    const pointField& x,
+    const scalarField& q,
+    labelList& targets,
+    List<vector>& fE,
+    std::vector<Row>& rows
+)
+{
+    const label N = x.size();
+    // Ewald reference on all or on a subset of targets
+    targets.clear();
+    if (N > 5000)
+    {
+        const label M = (N > 200000) ? 300 : 1000;
+        labelList perm(identity(N));
+        for (label k = 0; k < M; ++k)
+        {
+            const label j = k + rnd.position<label>(0, N - 1 - k);
+            std::swap(perm[k], perm[j]);
+        }
+        targets = SubList<label>(perm, M);
+    }
+    const ewaldSum ewald(L);
+    fE.setSize(N);
+    fE = Zero;
+    double tE;
+    {
+        const double t0 = now();
+        if (targets.empty())
+        {
+            ewald.compute(x, q, fE);
+        }
+        else
+        {
+            List<vector> fs;
+            ewald.forces(x, q, targets, fs);
+            forAll(targets, k) fE[targets[k]] = fs[k];
+        }
+        tE = now() - t0;
+    }
+    rows.push_back
+    ({
+        "ewald (reference)", tE, false, periodicForceError(fE, fE, targets),
+        targets.empty() ? "all particles"
+      : ("on " + std::to_string(targets.size()) + " targets")
+    });
+}
+
+
+//- The quasi-periodic rows: direct Nper = 1 (with and without the
+//  minimum-image dipole) and the pseudo-particle method
+void quasiPeriodicRows
+(
+    const settings& s,
+    const pointField& x,
+    const scalarField& q,
+    const List<vector>& fE,
+    const labelList& idx,
+    std::vector<Row>& rows
+)
+{
+    const label N = x.size();
+    const vector& L = s.L;
+    // Direct, Nper = 1, and minus the dipole term
+    List<vector> fDirect;
+    if (N <= s.maxDirect)
+    {
+        const quasiPeriodicDirect direct(L);
+        List<vector> f;
+        const double t = timeIt([&](){ direct.compute(x, q, f); });
+        fDirect = f;
+        rows.push_back({"direct Nper=1", t, true,
+            periodicForceError(f, fE, idx), ""});
+        const double t1 = now();
+        direct.addMinImageDipole(x, q, f, -1);
+        rows.push_back({"direct-dip Nper=1", t + now() - t1, true,
+            periodicForceError(f, fE, idx), "minus min-image dipole"});
+    }
+
+    // Pseudo-particle, optimal Ne; also against the direct sum (the
+    // measure of Boutsikakis 2023, Fig. 14 / Table 3)
+    if (N <= s.maxPseudo)
+    {
+        const pseudoParticle pp(L);
+        List<vector> f;
+        const double t = timeIt([&](){ pp.compute(x, q, f); });
+        rows.push_back({"pseudo Nv=1 Nper=1", t, true,
+            periodicForceError(f, fE, idx),
+            "Ne = " + std::to_string(pp.Ne(N))});
+        if (fDirect.size() == N)
+        {
+            rows.push_back({"pseudo vs direct", t, true,
+                periodicForceError(f, fDirect, idx),
+                "error measured against direct Nper=1, not Ewald"});
+        }
+    }
+}
+
+
+//- The P3M rows at the accuracy and 10x and 100x looser; returns the
+//  forces at the accuracy and its cutoff and Coulomb constant
+List<vector> p3mRows
+(
+    const settings& s,
+    const pointField& x,
+    const scalarField& q,
+    const List<vector>& fE,
+    const labelList& idx,
+    std::vector<Row>& rows,
+    scalar& rCut,
+    scalar& k
+)
+{
+    const label N = x.size();
+    const vector& L = s.L;
+    const scalar Q = s.Q;
+    const scalar accuracy = s.accuracy;
+    // P3M
+    const p3m pm(L, 1, accuracy);
+    double tSetup;
+    {
+        const double t0 = now();
+        pm.tune(N, N*Q*Q);
+        tSetup = now() - t0;
+    }
+    List<vector> fP;
+    const double tP = timeIt([&](){ pm.compute(x, q, fP); });
+    const p3m::parameters& pp = pm.params();
+    char note[512];
+    std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
+        " est. %.3g (target %.3g) N; real %.3g s, kspace %.3g s;"
+        " setup %.2f s", pp.rCut, pp.alpha, int(pp.mesh[0]),
+        int(pp.order), pp.error, pp.target, pm.timeReal_,
+        pm.timeKspace_, tSetup);
+    rows.push_back({"p3m", tP, true, periodicForceError(fP, fE, idx),
+        note});
+
+    // P3M at 10x and 100x looser accuracy: still far below the error
+    // of the quasi-periodic methods (the pseudo-particle comparison)
+    for (const scalar loosen : {10.0, 100.0})
+    {
+        const p3m pl(L, 1, min(0.1, loosen*accuracy));
+        pl.tune(N, N*Q*Q);
+        List<vector> fl;
+        const double tl = timeIt([&](){ pl.compute(x, q, fl); });
+        const p3m::parameters& pq = pl.params();
+        std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
+            " est. %.3g (target %.3g) N", pq.rCut, pq.alpha,
+            int(pq.mesh[0]), int(pq.order), pq.error, pq.target);
+        rows.push_back
+        ({
+            "p3m accuracy " + std::to_string(loosen*accuracy)
+                .substr(0, 6), tl, true,
+            periodicForceError(fl, fE, idx), note
+        });
+    }
+    rCut = pp.rCut;
+    k = pm.k();
+    return fP;
+}
+
+
+//- LAMMPS PPPM at the accuracy and 10x tighter, at P3M's cutoff rCut
+//  (forces scaled by the Coulomb constant k); their rows, and their
+//  results in lrs
+void lammpsRows
+(
+    const settings& s,
+    const pointField& x,
+    const scalarField& q,
+    const scalar rCut,
+    const scalar k,
+    const List<vector>& fE,
+    const labelList& idx,
+    std::vector<Row>& rows,
+    std::vector<lammpsResult>& lrs
+)
+{
+    const label N = x.size();
+    const vector& L = s.L;
+    const scalar Q = s.Q;
+    char note[512];
+    // LAMMPS PPPM at the nominal accuracy and 10x tighter (its measured
+    // error can exceed ours at the nominal one: equal accuracy is then
+    // bracketed)
+    if (!s.lmp.empty())
+    {
+        scalarField qt(q/Q);
+        pointField xw(N);
+        forAll(x, i)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                xw[i][d] = x[i][d] - L[d]*std::floor(x[i][d]/L[d]);
+            }
+        }
+        const scalar n = N/(L.x()*L.y()*L.z());
+        const scalar F0t = Foam::pow(n, 2.0/3.0);  // <qt^2> = 1
+        for (const scalar tighten : {1.0, 10.0})
+        {
+            // acc/10 needs ~N^(4/3) mesh memory: 1.1 GB at 1e5
+            if (tighten > 1 && N > 200000) continue;
+            lammpsResult lr = runLammps
+            (
+                s.lmp,
+                s.runs/("N" + std::to_string(N) + "_acc"
+              + std::to_string(int(tighten))),
+                L, xw, qt, rCut,
+                s.accuracy*F0t/Foam::sqrt(2.0)/tighten, 5, 10
+            );
+            if (!lr.ok) continue;
+            const scalar c = k*Q*Q;
+            forAll(lr.f, i) lr.f[i] *= c;
+            const double t = (lr.pair + lr.kspace)/lr.steps;
+            std::snprintf(note, sizeof(note), "grid %s, g_ewald %s,"
+                " est. abs. %s (lj units), pair %.3g s, kspace %.3g s"
+                " per step", lr.grid.c_str(), lr.gEwald.c_str(),
+                lr.estAbs.c_str(), lr.pair/lr.steps,
+                lr.kspace/lr.steps);
+            rows.push_back
+            ({
+                tighten == 1 ? "lammps pppm" : "lammps pppm acc/10", t,
+                true, periodicForceError(lr.f, fE, idx), note
+            });
+            lrs.push_back(lr);
+        }
+    }
+}
+
+
+//- The table of the rows of N charges
+void printTable(const label N, const std::vector<Row>& rows)
+{
+    // Table
+    std::printf("### Np = %d\n\n", int(N));
+    std::printf("| method | time/eval [s] | rms err/rms F | median"
+        " rel. err | p90 | 0-1 %% | 1-5 %% | 5-10 %% | 10-20 %% |"
+        " 20-50 %% | >50 %% | notes |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const Row& r : rows)
+    {
+        std::printf("| %s | %.4g |", r.method.c_str(), r.time);
+        if (r.haveErr)
+        {
+            const periodicForceError& e = r.err;
+            std::printf(" %.3g | %.3g | %.3g |",
+                e.rmsAbs/max(e.rmsRef, VSMALL), e.median, e.p90);
+            for (const scalar b : e.bins)
+            {
+                std::printf(" %.1f |", 100*b);
+            }
+        }
+        else
+        {
+            std::printf(" - | - | - | - | - | - | - | - | - |");
+        }
+        std::printf(" %s |\n", r.note.c_str());
+    }
+    std::printf("\n");
+}
+
+
+//- Ratios within this run: P3M against LAMMPS and the pseudo-particle
+//  method
+void printRatios
+(
+    const label N,
+    const std::vector<Row>& rows,
+    const List<vector>& fP,
+    const std::vector<lammpsResult>& lrs
+)
+{
+    // Ratios within this run
+    auto find = [&](const std::string& m) -> const Row*
+    {
+        for (const Row& r : rows)
+        {
+            if (r.method.rfind(m, 0) == 0) return &r;
+        }
+        return nullptr;
+    };
+    const Row* rp = find("p3m");
+    const Row* rl = find("lammps");
+    const Row* rs = find("pseudo");
+    if (rl)
+    {
+        scalar d = 0;
+        forAll(fP, i) d += magSqr(fP[i] - lrs[0].f[i]);
+        std::printf("- p3m time / LAMMPS time = %.3g (goal <= 1.5);"
+            " rms |F_p3m - F_lammps| / rms F = %.3g; rms error p3m %.3g,"
+            " LAMMPS %.3g", rp->time/rl->time,
+            Foam::sqrt(d/N)/max(rp->err.rmsRef, VSMALL),
+            rp->err.rmsAbs/rp->err.rmsRef, rl->err.rmsAbs/rl->err.rmsRef);
+        const Row* rt = find("lammps pppm acc/10");
+        if (rt)
+        {
+            std::printf("; p3m time / LAMMPS acc/10 time = %.3g"
+                " (its rms error %.3g)", rp->time/rt->time,
+                rt->err.rmsAbs/rt->err.rmsRef);
+        }
+        std::printf("\n");
+    }
+    if (rs)
+    {
+        std::printf("- pseudo time / p3m time = %.3g; p3m median error"
+            " %.3g vs pseudo %.3g\n", rs->time/rp->time, rp->err.median,
+            rs->err.median);
+        for (const Row& r : rows)
+        {
+            if (r.method.rfind("p3m accuracy", 0) != 0) continue;
+            std::printf("- pseudo time / %s time = %.3g; its median"
+                " error %.3g, p90 %.3g (pseudo: %.3g, %.3g)\n",
+                r.method.c_str(), rs->time/r.time, r.err.median,
+                r.err.p90, rs->err.median, rs->err.p90);
+        }
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
+
+//- Every method on N charges: the rows, the table and the ratios
+void benchmarkN(const settings& s, const label N)
+{
+    Random rnd(s.seed);
+    pointField x;
+    scalarField q;
+    makeCloud(N, rnd, s.L, s.Q, x, q);
+    labelList targets;
+    List<vector> fE;
+    std::vector<Row> rows;
+    ewaldReference(s.L, rnd, x, q, targets, fE, rows);
+    const labelList& idx = targets;
+    quasiPeriodicRows(s, x, q, fE, idx, rows);
+    scalar rCut = 0, k = 0;
+    const List<vector> fP(p3mRows(s, x, q, fE, idx, rows, rCut, k));
+    std::vector<lammpsResult> lrs;
+    lammpsRows(s, x, q, rCut, k, fE, idx, rows, lrs);
+    printTable(N, rows);
+    printRatios(N, rows, fP, lrs);
+}
+
+
 } // End anonymous namespace
 
 
@@ -296,298 +725,15 @@ int main(int argc, char *argv[])
         [](){ std::ifstream f("/proc/loadavg"); std::string s;
             std::getline(f, s); return s; }().c_str());
 
+    const settings s{accuracy, seed, maxDirect, maxPseudo, runs, lmp, L, Q};
     if (args.found("sweep"))
     {
-        const scalarList rcs(args.get<scalarList>("sweep"));
-        const label N = Ns[0];
-        Random rnd(seed);
-        pointField x(N);
-        scalarField q(N, Q);
-        for (label i = 0; i < N; ++i)
-        {
-            x[i] = twoPi*vector
-            (
-                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
-                rnd.sample01<scalar>()
-            );
-        }
-        std::printf("| rc | alpha | mesh | est. error/target | real [s] |"
-            " kspace [s] | total [s] |\n|---|---|---|---|---|---|---|\n");
-        for (const scalar rc : rcs)
-        {
-            dictionary dict;
-            dict.add("L", L);
-            dict.add("accuracy", accuracy);
-            dict.add("rCut", rc);
-            const p3m pm(dict);
-            pm.tune(N, N*Q*Q);
-            List<vector> f;
-            double tr = GREAT, tk = GREAT, tt = GREAT;
-            for (int r = 0; r < 3; ++r)
-            {
-                const double t0 = now();
-                pm.compute(x, q, f);
-                tt = std::min(tt, now() - t0);
-                tr = std::min(tr, double(pm.timeReal_));
-                tk = std::min(tk, double(pm.timeKspace_));
-            }
-            const p3m::parameters& p = pm.params();
-            std::printf("| %.4g | %.4g | %d | %.3g | %.4g | %.4g | %.4g |\n",
-                p.rCut, p.alpha, int(p.mesh[0]), p.error/p.target, tr, tk,
-                tt);
-        }
+        sweepCutoffs(s, Ns[0], args.get<scalarList>("sweep"));
         return 0;
     }
-
     for (const label N : Ns)
     {
-        // Cloud
-        Random rnd(seed);
-        pointField x(N);
-        scalarField q(N, Q);
-        for (label i = 0; i < N; ++i)
-        {
-            x[i] = twoPi*vector
-            (
-                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
-                rnd.sample01<scalar>()
-            );
-        }
-
-        // Ewald reference on all or on a subset of targets
-        labelList targets;
-        if (N > 5000)
-        {
-            const label M = (N > 200000) ? 300 : 1000;
-            labelList perm(identity(N));
-            for (label k = 0; k < M; ++k)
-            {
-                const label j = k + rnd.position<label>(0, N - 1 - k);
-                std::swap(perm[k], perm[j]);
-            }
-            targets = SubList<label>(perm, M);
-        }
-        const ewaldSum ewald(L);
-        List<vector> fE(N, Zero);
-        double tE;
-        {
-            const double t0 = now();
-            if (targets.empty())
-            {
-                ewald.compute(x, q, fE);
-            }
-            else
-            {
-                List<vector> fs;
-                ewald.forces(x, q, targets, fs);
-                forAll(targets, k) fE[targets[k]] = fs[k];
-            }
-            tE = now() - t0;
-        }
-        const labelList& idx = targets;
-
-        std::vector<Row> rows;
-        rows.push_back
-        ({
-            "ewald (reference)", tE, false, periodicForceError(fE, fE, idx),
-            targets.empty() ? "all particles"
-          : ("on " + std::to_string(targets.size()) + " targets")
-        });
-
-        // Direct, Nper = 1, and minus the dipole term
-        List<vector> fDirect;
-        if (N <= maxDirect)
-        {
-            const quasiPeriodicDirect direct(L);
-            List<vector> f;
-            const double t = timeIt([&](){ direct.compute(x, q, f); });
-            fDirect = f;
-            rows.push_back({"direct Nper=1", t, true,
-                periodicForceError(f, fE, idx), ""});
-            const double t1 = now();
-            direct.addMinImageDipole(x, q, f, -1);
-            rows.push_back({"direct-dip Nper=1", t + now() - t1, true,
-                periodicForceError(f, fE, idx), "minus min-image dipole"});
-        }
-
-        // Pseudo-particle, optimal Ne; also against the direct sum (the
-        // measure of Boutsikakis 2023, Fig. 14 / Table 3)
-        if (N <= maxPseudo)
-        {
-            const pseudoParticle pp(L);
-            List<vector> f;
-            const double t = timeIt([&](){ pp.compute(x, q, f); });
-            rows.push_back({"pseudo Nv=1 Nper=1", t, true,
-                periodicForceError(f, fE, idx),
-                "Ne = " + std::to_string(pp.Ne(N))});
-            if (fDirect.size() == N)
-            {
-                rows.push_back({"pseudo vs direct", t, true,
-                    periodicForceError(f, fDirect, idx),
-                    "error measured against direct Nper=1, not Ewald"});
-            }
-        }
-
-        // P3M
-        const p3m pm(L, 1, accuracy);
-        double tSetup;
-        {
-            const double t0 = now();
-            pm.tune(N, N*Q*Q);
-            tSetup = now() - t0;
-        }
-        List<vector> fP;
-        const double tP = timeIt([&](){ pm.compute(x, q, fP); });
-        const p3m::parameters& pp = pm.params();
-        char note[512];
-        std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
-            " est. %.3g (target %.3g) N; real %.3g s, kspace %.3g s;"
-            " setup %.2f s", pp.rCut, pp.alpha, int(pp.mesh[0]),
-            int(pp.order), pp.error, pp.target, pm.timeReal_,
-            pm.timeKspace_, tSetup);
-        rows.push_back({"p3m", tP, true, periodicForceError(fP, fE, idx),
-            note});
-
-        // P3M at 10x and 100x looser accuracy: still far below the error
-        // of the quasi-periodic methods (the pseudo-particle comparison)
-        for (const scalar loosen : {10.0, 100.0})
-        {
-            const p3m pl(L, 1, min(0.1, loosen*accuracy));
-            pl.tune(N, N*Q*Q);
-            List<vector> fl;
-            const double tl = timeIt([&](){ pl.compute(x, q, fl); });
-            const p3m::parameters& pq = pl.params();
-            std::snprintf(note, sizeof(note), "rc %.4g a %.4g mesh %d P %d,"
-                " est. %.3g (target %.3g) N", pq.rCut, pq.alpha,
-                int(pq.mesh[0]), int(pq.order), pq.error, pq.target);
-            rows.push_back
-            ({
-                "p3m accuracy " + std::to_string(loosen*accuracy)
-                    .substr(0, 6), tl, true,
-                periodicForceError(fl, fE, idx), note
-            });
-        }
-
-        // LAMMPS PPPM at the nominal accuracy and 10x tighter (its measured
-        // error can exceed ours at the nominal one: equal accuracy is then
-        // bracketed)
-        std::vector<lammpsResult> lrs;
-        if (!lmp.empty())
-        {
-            scalarField qt(q/Q);
-            pointField xw(N);
-            forAll(x, i)
-            {
-                for (direction d = 0; d < 3; ++d)
-                {
-                    xw[i][d] = x[i][d] - L[d]*std::floor(x[i][d]/L[d]);
-                }
-            }
-            const scalar n = N/(L.x()*L.y()*L.z());
-            const scalar F0t = Foam::pow(n, 2.0/3.0);  // <qt^2> = 1
-            for (const scalar tighten : {1.0, 10.0})
-            {
-                // acc/10 needs ~N^(4/3) mesh memory: 1.1 GB at 1e5
-                if (tighten > 1 && N > 200000) continue;
-                lammpsResult lr = runLammps
-                (
-                    lmp,
-                    runs/("N" + std::to_string(N) + "_acc"
-                  + std::to_string(int(tighten))),
-                    L, xw, qt, pp.rCut,
-                    accuracy*F0t/Foam::sqrt(2.0)/tighten, 5, 10
-                );
-                if (!lr.ok) continue;
-                const scalar c = pm.k()*Q*Q;
-                forAll(lr.f, i) lr.f[i] *= c;
-                const double t = (lr.pair + lr.kspace)/lr.steps;
-                std::snprintf(note, sizeof(note), "grid %s, g_ewald %s,"
-                    " est. abs. %s (lj units), pair %.3g s, kspace %.3g s"
-                    " per step", lr.grid.c_str(), lr.gEwald.c_str(),
-                    lr.estAbs.c_str(), lr.pair/lr.steps,
-                    lr.kspace/lr.steps);
-                rows.push_back
-                ({
-                    tighten == 1 ? "lammps pppm" : "lammps pppm acc/10", t,
-                    true, periodicForceError(lr.f, fE, idx), note
-                });
-                lrs.push_back(lr);
-            }
-        }
-
-        // Table
-        std::printf("### Np = %d\n\n", int(N));
-        std::printf("| method | time/eval [s] | rms err/rms F | median"
-            " rel. err | p90 | 0-1 %% | 1-5 %% | 5-10 %% | 10-20 %% |"
-            " 20-50 %% | >50 %% | notes |\n");
-        std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-        for (const Row& r : rows)
-        {
-            std::printf("| %s | %.4g |", r.method.c_str(), r.time);
-            if (r.haveErr)
-            {
-                const periodicForceError& e = r.err;
-                std::printf(" %.3g | %.3g | %.3g |",
-                    e.rmsAbs/max(e.rmsRef, VSMALL), e.median, e.p90);
-                for (const scalar b : e.bins)
-                {
-                    std::printf(" %.1f |", 100*b);
-                }
-            }
-            else
-            {
-                std::printf(" - | - | - | - | - | - | - | - | - |");
-            }
-            std::printf(" %s |\n", r.note.c_str());
-        }
-        std::printf("\n");
-
-        // Ratios within this run
-        auto find = [&](const std::string& m) -> const Row*
-        {
-            for (const Row& r : rows)
-            {
-                if (r.method.rfind(m, 0) == 0) return &r;
-            }
-            return nullptr;
-        };
-        const Row* rp = find("p3m");
-        const Row* rl = find("lammps");
-        const Row* rs = find("pseudo");
-        if (rl)
-        {
-            scalar d = 0;
-            forAll(fP, i) d += magSqr(fP[i] - lrs[0].f[i]);
-            std::printf("- p3m time / LAMMPS time = %.3g (goal <= 1.5);"
-                " rms |F_p3m - F_lammps| / rms F = %.3g; rms error p3m %.3g,"
-                " LAMMPS %.3g", rp->time/rl->time,
-                Foam::sqrt(d/N)/max(rp->err.rmsRef, VSMALL),
-                rp->err.rmsAbs/rp->err.rmsRef, rl->err.rmsAbs/rl->err.rmsRef);
-            const Row* rt = find("lammps pppm acc/10");
-            if (rt)
-            {
-                std::printf("; p3m time / LAMMPS acc/10 time = %.3g"
-                    " (its rms error %.3g)", rp->time/rt->time,
-                    rt->err.rmsAbs/rt->err.rmsRef);
-            }
-            std::printf("\n");
-        }
-        if (rs)
-        {
-            std::printf("- pseudo time / p3m time = %.3g; p3m median error"
-                " %.3g vs pseudo %.3g\n", rs->time/rp->time, rp->err.median,
-                rs->err.median);
-            for (const Row& r : rows)
-            {
-                if (r.method.rfind("p3m accuracy", 0) != 0) continue;
-                std::printf("- pseudo time / %s time = %.3g; its median"
-                    " error %.3g, p90 %.3g (pseudo: %.3g, %.3g)\n",
-                    r.method.c_str(), rs->time/r.time, r.err.median,
-                    r.err.p90, rs->err.median, rs->err.p90);
-            }
-        }
-        std::printf("\n");
-        std::fflush(stdout);
+        benchmarkN(s, N);
     }
 
     return 0;
