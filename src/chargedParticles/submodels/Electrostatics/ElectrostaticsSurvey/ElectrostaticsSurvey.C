@@ -524,15 +524,24 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
     );
     clockTime warmUp;
     model->update();
+    const scalar tFirst = returnReduce(warmUp.elapsedTime(), maxOp<scalar>());
+    // The forces of this first evaluation are the rung's: the timed ones
+    // after it start their iterative solves (BEM, induced dipoles) from
+    // the last solution, and how many there are depends on the wall time
+    // (below), so forces taken after them would depend on the machine's
+    // load in their last bits
+    pointField x;
+    scalarField q;
+    vectorField f;
+    gather(x, q, f);
     // A rung whose first evaluation takes more than 10 s is timed by it
     // alone (its caches built, so an upper bound): the survey stays
     // affordable on large clouds
-    const bool slow =
-        returnReduce(warmUp.elapsedTime(), maxOp<scalar>()) > 10;
+    const bool slow = tFirst > 10;
     scalarField times(slow ? 1 : repeats_);
     if (slow)
     {
-        times[0] = returnReduce(warmUp.elapsedTime(), maxOp<scalar>());
+        times[0] = tFirst;
     }
     else forAll(times, r)
     {
@@ -559,11 +568,6 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
         scalar(max(mem.update().rss() - rss0, label(0)))/1024,
         maxOp<scalar>()
     );
-
-    pointField x;
-    scalarField q;
-    vectorField f;
-    gather(x, q, f);
 
     // The field of the electrodes of a mesh rung (all charges zero) is not
     // the charges' own

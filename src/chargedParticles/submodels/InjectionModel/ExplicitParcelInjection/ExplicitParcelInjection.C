@@ -163,6 +163,10 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcelSize
     const scalar sizeMax
 )
 {
+    const string sizeUnit
+    (
+        "m (1 nm to the diagonal of the mesh's bounding box)"
+    );
     // Size: a sphere's diameter or an ellipsoid's semi-axes
     semiAxes_[i] = Zero;
     if (pd.readIfPresent("semiAxes", semiAxes_[i]))
@@ -202,7 +206,7 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcelSize
         d_[i] = readParcelScalar
         (
             pd, i, "d", true, nullptr, inputLimits::sizeMin, sizeMax,
-            "m (1 nm to the diagonal of the mesh's bounding box)"
+            sizeUnit
         );
     }
     else

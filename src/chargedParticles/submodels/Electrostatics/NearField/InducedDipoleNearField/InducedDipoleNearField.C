@@ -167,7 +167,11 @@ Foam::label Foam::InducedDipoleNearField<CloudType>::ownParcels
         E[i] = p.E();
         P[i] = p.dipole();
         keys[i] = labelPair(p.origProc(), p.origId());
-        if (p.epsilonR() != kappa0 && !excluded.found(keys[i]))
+        if
+        (
+            p.epsilonR() != kappa0
+         && !excluded.found(labelPair(p.origProc(), p.origId()))
+        )
         {
             A[i] = inducedDipole::polarisability
             (
