@@ -22,8 +22,8 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
+#include "readUtilityDict.H"
 #include "argList.H"
-#include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "dictionary.H"
@@ -517,32 +517,12 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     argList::noFunctionObjects();
-    argList::addOption
-    (
-        "dict",
-        "file",
-        "Read this dictionary (any path) instead of"
-        " system/bemElectrostaticsDict of the case"
-    );
+    addUtilityDictOption("bemElectrostatics");
 
     argList args(argc, argv);
 
-    const fileName dictFile =
-        args.found("dict")
-      ? args.get<fileName>("dict").expand()
-      : args.path()/"system"/"bemElectrostaticsDict";
-
-    IFstream is(dictFile);
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "Cannot open the dictionary " << dictFile << nl
-            << "    Give one with -dict <file>, e.g. the example"
-            << " applications/utilities/bemElectrostatics/"
-            << "bemElectrostaticsDict.example"
-            << exit(FatalError);
-    }
-    const dictionary dict(is);
+    fileName dictFile;
+    const dictionary dict(readUtilityDict(args, "bemElectrostatics", dictFile));
 
     const scalar kappa0 = dict.getOrDefault<scalar>("kappa0", 1);
     if (!(kappa0 >= 1))

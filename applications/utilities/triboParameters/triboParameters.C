@@ -78,8 +78,8 @@ Usage
 
 \*---------------------------------------------------------------------------*/
 
+#include "readUtilityDict.H"
 #include "argList.H"
-#include "IFstream.H"
 #include "dictionary.H"
 #include "triboCharging.H"
 #include "mathematicalConstants.H"
@@ -683,32 +683,12 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     argList::noFunctionObjects();
-    argList::addOption
-    (
-        "dict",
-        "file",
-        "Read this dictionary (any path) instead of"
-        " system/triboParametersDict of the case"
-    );
+    addUtilityDictOption("triboParameters");
 
     argList args(argc, argv);
 
-    const fileName dictFile =
-        args.found("dict")
-      ? args.get<fileName>("dict").expand()
-      : args.path()/"system"/"triboParametersDict";
-
-    IFstream is(dictFile);
-    if (!is.good())
-    {
-        FatalErrorInFunction
-            << "Cannot open the dictionary " << dictFile << nl
-            << "    Give one with -dict <file>, e.g. the example"
-            << " applications/utilities/triboParameters/"
-            << "triboParametersDict.example"
-            << exit(FatalError);
-    }
-    const dictionary dict(is);
+    fileName dictFile;
+    const dictionary dict(readUtilityDict(args, "triboParameters", dictFile));
 
     const word areaModel = dict.getOrDefault<word>("contactAreaModel", "paper");
     const dictionary& entries = dict.subDict("entries");
