@@ -258,6 +258,18 @@ struct result
 };
 
 
+//- The Hertz overlap at the impact speed (Rasera Eq. 4 with r*, Y*, m*)
+//  and its contact area pi r* delta_max, into res
+void hertzContact(result& res)
+{
+    res.deltaMax = triboCharging::hertzMaxOverlap
+    (
+        res.mStar, res.rStar, res.YStar, res.vn
+    );
+    res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
+}
+
+
 //- A particle against a wall: contact mechanics (Eq. 4 or 25) into res;
 //  returns the largest contact area
 scalar wallContact
@@ -293,11 +305,7 @@ scalar wallContact
     {
         res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu);
     }
-    res.deltaMax = triboCharging::hertzMaxOverlap
-    (
-        res.mStar, res.rStar, res.YStar, res.vn
-    );
-    res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
+    hertzContact(res);
     A = hertz
       ? res.AHertz
       : triboCharging::maxContactAreaWall
@@ -332,11 +340,7 @@ scalar pairContact
     res.mStar = triboCharging::effectiveMass(mI, mJ);
     res.rStar = triboCharging::effectiveRadius(pI.r, pJ.r);
     res.YStar = triboCharging::effectiveModulus(pI.E, pI.nu, pJ.E, pJ.nu);
-    res.deltaMax = triboCharging::hertzMaxOverlap
-    (
-        res.mStar, res.rStar, res.YStar, res.vn
-    );
-    res.AHertz = triboCharging::contactArea(res.rStar, res.deltaMax);
+    hertzContact(res);
     A = hertz
       ? res.AHertz
       : triboCharging::maxContactAreaPair
