@@ -8,6 +8,8 @@
 # ellipsoidCollision; the dipoles' maxIter (a label >= 1); non-finite
 # parcel U, omega, eulerAngles; NaN p3m rCut, a non-bool fastErfc, Ne < 0;
 # the BEM solver's maxPreconditionerPatches, directOutputMax, nearFactor;
+# several materials: an unknown name, an unlike pair without Gamma, a
+# Gamma for like materials, a pair given twice, a material's rho0;
 # non-finite carrierProperties (rho, mu, U). Non-finite values come from
 # #eval with FOAM_SIGFPE=false (the reader refuses nan and inf).
 # The escapes of the dictionary fuzzer (doc/extremes.md): maxCo out of
@@ -295,6 +297,29 @@ badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
     'Entry logInterval = 0 is out of range: >= 1'
 badCase unknownMomentumCoupling 'maxCo +0.3;' 'maxCo 0.3; momentumCoupling implicit;' \
     'Entry momentumCoupling = implicit is not one of: conservativeImplicit'
+# Several materials: an unknown material, an unlike pair without Gamma,
+# a Gamma of like materials, a pair listed twice, a material's rho0
+M='poissonsRatio   0.42;(.*)\n\}'
+badCase unknownMaterial "$M" \
+    'poissonsRatio 0.42; materials { PTFE {} nylon { rho0 1140; } }\1\n}' \
+    'Entry material in .* names material steel, which the cloud does not have: its materials \(constantProperties/materials\) are' \
+    'q -1.71e-10; \}' 'q -1.71e-10; material steel; }'
+badCase unlikeWithoutGamma "$M" \
+    'poissonsRatio 0.42; materials { PTFE {} nylon { rho0 1140; } }\1\n}' \
+    'Materials PTFE and nylon have no charging field Gamma in .*: give materialPairs'
+badCase likeGamma "$M" \
+    'poissonsRatio 0.42; materials { PTFE {} nylon { rho0 1140; } }\1\n}' \
+    'Entry Gamma in .* is not used: like materials have Gamma = 0' \
+    'particles \{ kappaC 0; \}' \
+    'particles { kappaC 0; } materialPairs { a { materials (nylon nylon); Gamma 1e5; } b { materials (PTFE nylon); Gamma 1e5; } }'
+badCase pairTwice "$M" \
+    'poissonsRatio 0.42; materials { PTFE {} nylon { rho0 1140; } }\1\n}' \
+    'The material pair \(nylon PTFE\) of .* is also given by .*: list each pair once' \
+    'particles \{ kappaC 0; \}' \
+    'particles { kappaC 0; } materialPairs { a { materials (PTFE nylon); Gamma 1e5; } b { materials (nylon PTFE); Gamma -1e5; } }'
+badCase materialDensity "$M" \
+    'poissonsRatio 0.42; materials { PTFE {} nylon { rho0 -1; } }\1\n}' \
+    'Entry rho0 \(particle density \[kg/m3\]\) = -1 in .*nylon is out of range'
 badCase zeroNeighbourSkin 'maxInteractionDistance +4e-3;' \
     'maxInteractionDistance 4e-3; neighbourSkin 0;' \
     'Entry neighbourSkin = 0 is out of range \(0, maxInteractionDistance = 0.004\]'

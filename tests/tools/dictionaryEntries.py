@@ -113,6 +113,14 @@ REVIEWED = {
         (['radius', 'rCut'], 'checkedCoeffs: the charge shape radius of'
              ' meshPoissonCoeffs, range-checked before meshPoisson reads it'),
     # --- keys built at run time
+    ('particleMaterials.C', 'names[m]'):
+        ([], 'constantProperties/materials/<material>: the user\'s material'
+             ' names, each a dictionary of rho0, youngsModulus, poissonsRatio'),
+    ('EllipsoidCollision.C', 'materials.name(m)'):
+        ([], 'walls/<material>: a material\'s own e, mu, rollingFriction'),
+    ('RaseraTriboCharging.C', 'materials.name(m)'):
+        ([], 'particles/<material> and walls/<patch>/<material>: a'
+             ' material\'s own kappaC, workFunction, Gamma'),
     ('ElectrostaticsModel.C', 'type + "Coeffs"'):
         ('electrostaticsCoeffs',
          '<type>Coeffs of the electrostatics model (added empty if absent):'

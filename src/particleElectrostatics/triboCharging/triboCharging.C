@@ -181,8 +181,9 @@ Foam::scalar Foam::triboCharging::GammaFromWorkFunctions
         deltaE
     );
 
-    // Rasera Eqs. (14)-(15)
-    return (phiI - phiJ)/(deltaE*elementaryCharge);
+    // Rasera Eqs. (14)-(15), electrons from the lower work function to
+    // the higher (the printed phi_i - phi_j reversed: see the header)
+    return (phiJ - phiI)/(deltaE*elementaryCharge);
 }
 
 

@@ -259,17 +259,19 @@ TEST(triboCharging, ShrinkingAreaTransfersNothing)
 TEST(triboCharging, WorkFunctionGamma)
 {
     // Eqs. (14)-(15): 1 eV difference over delta_e = 500 nm (Laurentie's
-    // value): 1 V/500 nm = 2e6 V/m
+    // value): 1 V/500 nm = 2e6 V/m, negative on the body of the higher
+    // work function (it takes the electrons: PTFE on steel, Rasera
+    // Table 5)
     const scalar e = triboCharging::elementaryCharge;
     EXPECT_NEAR
     (
-        triboCharging::GammaFromWorkFunctions(5.0*e, 4.0*e, 500e-9)/2e6,
+        triboCharging::GammaFromWorkFunctions(5.0*e, 4.0*e, 500e-9)/(-2e6),
         1.0,
         1e-14
     );
     EXPECT_NEAR
     (
-        triboCharging::GammaFromWorkFunctions(4.0*e, 4.5*e, 1e-9)/(-5e8),
+        triboCharging::GammaFromWorkFunctions(4.0*e, 4.5*e, 1e-9)/5e8,
         1.0,
         1e-14
     );

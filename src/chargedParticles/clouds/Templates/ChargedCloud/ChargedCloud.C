@@ -301,6 +301,12 @@ void Foam::ChargedCloud<CloudType>::setParcelThermoProperties
 )
 {
     CloudType::setParcelThermoProperties(parcel, lagrangianDt);
+
+    // The first material (OpenFOAM's injection models; explicitParcels
+    // sets its own) and its density
+    parcel.material() = 0;
+    parcel.rho() =
+        constProps_.materials().dict(0).template get<scalar>("rho0");
     parcel.q() = constProps_.q0();
     parcel.epsilonR() = constProps_.epsilonR0();
 }
@@ -316,6 +322,11 @@ void Foam::ChargedCloud<CloudType>::checkParcelProperties
 {
     CloudType::checkParcelProperties(parcel, lagrangianDt, fullyDescribed);
     forcesStale_ = true;
+    constProps_.materials().check
+    (
+        parcel.material(),
+        this->subModelProperties().subDict("injectionModels")
+    );
 
     // Whatever the injection model (explicitParcels names the parcel and
     // its entry before this): a value out of range is reported with the

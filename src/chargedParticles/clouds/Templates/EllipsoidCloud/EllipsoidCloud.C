@@ -62,6 +62,18 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
     this->updateCellOccupancy();
 
+    // Lazy tracking: the positions of a write step's forces are the
+    // tracked ones that are written, whose round-off differs from the
+    // lazy centres': a restart evaluates its first forces (and charging
+    // fields) at the written positions, and continues only so exactly
+    if (trackBeforeForces_)
+    {
+        for (parcelType& p : *this)
+        {
+            p.trackDrift();
+        }
+    }
+
     cloud.calculateForces();
 
     inPlace(parcelType::trackingData::tpVelocityHalfStep);
@@ -405,6 +417,7 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     ),
     gatherer_(nullptr),
     kickInMove_(false),
+    trackBeforeForces_(false),
     contactTime_(0),
     maxInjectionOverlap_(0),
     conservativeCoupling_(false)
@@ -538,6 +551,7 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
+    trackBeforeForces_(false),
     contactTime_(0),
     conservativeCoupling_(c.conservativeCoupling_)
 {}
@@ -557,6 +571,7 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
+    trackBeforeForces_(false),
     contactTime_(0),
     conservativeCoupling_(c.conservativeCoupling_)
 {}
@@ -793,6 +808,10 @@ void Foam::EllipsoidCloud<CloudType>::motion
 
     const label nSubCycles = this->collision().nSubCycles();
 
+    // Lazy tracking: the written positions are the tracked ones, tracked
+    // in the last move of the step, before its forces (moveCollide)
+    const bool writeStep = this->db().time().writeTime();
+
     if (nSubCycles > 1)
     {
         Info<< "    " << nSubCycles << " move-collide subCycles" << endl;
@@ -805,27 +824,23 @@ void Foam::EllipsoidCloud<CloudType>::motion
 
         while (!(++moveCollideSubCycle).end())
         {
+            trackBeforeForces_ =
+                writeStep && moveCollideSubCycle.index() == nSubCycles;
             moveCollide(cloud, td, this->db().time().deltaTValue());
         }
+        trackBeforeForces_ = false;
 
         moveCollideSubCycle.endSubCycle();
     }
     else
     {
+        trackBeforeForces_ = writeStep;
         moveCollide(cloud, td, this->db().time().deltaTValue());
+        trackBeforeForces_ = false;
     }
 
     // Ready for the next injection (see evolve)
     td.part() = parcelType::trackingData::tpVelocityHalfStep;
-
-    // Lazy tracking: the written positions are the tracked ones
-    if (this->db().time().writeTime())
-    {
-        for (parcelType& p : *this)
-        {
-            p.trackDrift();
-        }
-    }
 }
 
 

@@ -19,6 +19,7 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel(const ChargedParcel<ParcelType>& 
     tE_(p.tE_),
     E_(p.E_),
     dipole_(p.dipole_),
+    material_(p.material_),
     chargingRecords_(p.chargingRecords_)
 {}
 
@@ -37,6 +38,7 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
     tE_(p.tE_),
     E_(p.E_),
     dipole_(p.dipole_),
+    material_(p.material_),
     chargingRecords_(p.chargingRecords_)
 {}
 

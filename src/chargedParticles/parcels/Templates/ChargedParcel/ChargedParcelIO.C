@@ -40,6 +40,7 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
     tE_(Zero),
     E_(Zero),
     dipole_(Zero),
+    material_(0),
     chargingRecords_()
 {
     if (readFields)
@@ -65,7 +66,7 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
             is.read(reinterpret_cast<char*>(&q_), sizeofFields);
         }
 
-        is >> chargingRecords_;
+        is >> material_ >> chargingRecords_;
     }
 
     is.check(FUNCTION_NAME);
@@ -104,6 +105,11 @@ void Foam::ChargedParcel<ParcelType>::readFields(CloudType& c)
         c.fieldIOobject("dipole", IOobject::READ_IF_PRESENT)
     );
     const bool haveDipole = dipole.size() == c.size();
+    IOField<label> material
+    (
+        c.fieldIOobject("material", IOobject::READ_IF_PRESENT)
+    );
+    const bool haveMaterial = material.size() == c.size();
 
     const word rec("chargingRecords");
     labelFieldCompactIOField pairAccessed
@@ -161,6 +167,10 @@ void Foam::ChargedParcel<ParcelType>::readFields(CloudType& c)
         {
             p.dipole_ = dipole[i];
         }
+        if (haveMaterial)
+        {
+            p.material_ = material[i];
+        }
         if (haveRecords)
         {
             p.chargingRecords_ = chargingRecordList
@@ -197,6 +207,10 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
     IOField<vector> tE(c.fieldIOobject("tE", IOobject::NO_READ), np);
     IOField<vector> E(c.fieldIOobject("E", IOobject::NO_READ), np);
     IOField<vector> dipole(c.fieldIOobject("dipole", IOobject::NO_READ), np);
+    IOField<label> material
+    (
+        c.fieldIOobject("material", IOobject::NO_READ), np
+    );
 
     const word rec("chargingRecords");
     labelFieldCompactIOField pairAccessed
@@ -237,6 +251,7 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
         tE[i] = p.tE();
         E[i] = p.E();
         dipole[i] = p.dipole();
+        material[i] = p.material();
         const chargingRecordList& r = p.chargingRecords();
         pairAccessed[i] = r.pairAccessed();
         pairOrigProc[i] = r.pairOrigProcOfOther();
@@ -254,6 +269,7 @@ void Foam::ChargedParcel<ParcelType>::writeFields(const CloudType& c)
     tE.write(valid);
     E.write(valid);
     dipole.write(valid);
+    material.write(valid);
     pairAccessed.write(valid);
     pairOrigProc.write(valid);
     pairOrigId.write(valid);
@@ -285,6 +301,7 @@ void Foam::ChargedParcel<ParcelType>::writeProperties
     writeProp("tE", tE_);
     writeProp("E", E_);
     writeProp("dipole", dipole_);
+    writeProp("material", material_);
 
     #undef writeProp
 }
@@ -308,6 +325,7 @@ void Foam::ChargedParcel<ParcelType>::readObjects
     const auto& tE = cloud::lookupIOField<vector>("tE", obr);
     const auto& E = cloud::lookupIOField<vector>("E", obr);
     const auto& dipole = cloud::lookupIOField<vector>("dipole", obr);
+    const auto& material = cloud::lookupIOField<label>("material", obr);
 
     label i = 0;
     for (ChargedParcel<ParcelType>& p : c)
@@ -318,6 +336,7 @@ void Foam::ChargedParcel<ParcelType>::readObjects
         p.tE_ = tE[i];
         p.E_ = E[i];
         p.dipole_ = dipole[i];
+        p.material_ = material[i];
         ++i;
     }
 }
@@ -341,6 +360,7 @@ void Foam::ChargedParcel<ParcelType>::writeObjects
     auto& tE = cloud::createIOField<vector>("tE", np, obr);
     auto& E = cloud::createIOField<vector>("E", np, obr);
     auto& dipole = cloud::createIOField<vector>("dipole", np, obr);
+    auto& material = cloud::createIOField<label>("material", np, obr);
 
     label i = 0;
     for (const ChargedParcel<ParcelType>& p : c)
@@ -351,6 +371,7 @@ void Foam::ChargedParcel<ParcelType>::writeObjects
         tE[i] = p.tE();
         E[i] = p.E();
         dipole[i] = p.dipole();
+        material[i] = p.material();
         ++i;
     }
 }
@@ -374,6 +395,7 @@ Foam::Ostream& Foam::operator<<
             << token::SPACE << p.tE()
             << token::SPACE << p.E()
             << token::SPACE << p.dipole()
+            << token::SPACE << p.material()
             << token::SPACE << p.chargingRecords();
     }
     else
@@ -384,7 +406,7 @@ Foam::Ostream& Foam::operator<<
             reinterpret_cast<const char*>(&p.q_),
             ChargedParcel<ParcelType>::sizeofFields
         );
-        os  << p.chargingRecords();
+        os  << p.material() << p.chargingRecords();
     }
 
     os.check(FUNCTION_NAME);

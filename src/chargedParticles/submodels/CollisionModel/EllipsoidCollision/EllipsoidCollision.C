@@ -159,11 +159,10 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
 (
     const scalar E1, const scalar nu1,
     const scalar E2, const scalar nu2,
-    const scalar e, const scalar mu,
+    const scalar e, const scalar mu, const scalar muR,
     const dictionary& dict
 )
 {
-    const scalar muR = dict.template lookupOrDefault<scalar>("rollingFriction", 0);
     if (!(muR >= 0) || !(muR <= inputLimits::large))
     {
         FatalIOErrorInFunction(dict)
@@ -214,6 +213,78 @@ Foam::EllipsoidCollision<CloudType>::makeLaw
     law.e = e;
     law.muR = muR;
     return law;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
+{
+    const particleMaterials& materials =
+        this->owner().constProps().materials();
+    const label n = nMaterials_;
+
+    // Reduced stiffness: all contact moduli scaled by chi
+    particleE_.setSize(n);
+    particleNu_.setSize(n);
+    for (label m = 0; m < n; ++m)
+    {
+        particleE_[m] = chi_*readPositive(materials.dict(m), "youngsModulus");
+        particleNu_[m] = materials.dict(m).get<scalar>("poissonsRatio");
+    }
+
+    // Every pair: e, mu and rollingFriction of its materialPairs entry,
+    // else of the coefficients
+    const scalar e = coeffs.get<scalar>("e");
+    const scalar mu = coeffs.get<scalar>("mu");
+    const scalar muR =
+        coeffs.template lookupOrDefault<scalar>("rollingFriction", 0);
+    boolList swapped;
+    const List<const dictionary*> pairs
+    (
+        coeffs.found("materialPairs")
+      ? materials.pairEntries(coeffs.subDict("materialPairs"), swapped)
+      : List<const dictionary*>(n*n, nullptr)
+    );
+    pp_.setSize(n*n);
+    for (label a = 0; a < n; ++a)
+    {
+        for (label b = 0; b < n; ++b)
+        {
+            const label ab = materials.pairIndex(a, b);
+            const dictionary& d = pairs[ab] ? *pairs[ab] : coeffs;
+            pp_[ab] = makeLaw
+            (
+                particleE_[a], particleNu_[a], particleE_[b], particleNu_[b],
+                d.template lookupOrDefault<scalar>("e", e),
+                d.template lookupOrDefault<scalar>("mu", mu),
+                d.template lookupOrDefault<scalar>("rollingFriction", muR),
+                d
+            );
+        }
+    }
+
+    // The walls: walls/<material> overrides e, mu and rollingFriction
+    const dictionary& walls = coeffs.subDict("walls");
+    const scalar Ew = chi_*readPositive(walls, "youngsModulus");
+    const scalar nuw = walls.get<scalar>("poissonsRatio");
+    const scalar ew = walls.get<scalar>("e");
+    const scalar muw = walls.get<scalar>("mu");
+    const scalar muRw =
+        walls.template lookupOrDefault<scalar>("rollingFriction", 0);
+    pw_.setSize(n);
+    for (label m = 0; m < n; ++m)
+    {
+        const dictionary* own = walls.findDict(materials.name(m));
+        const dictionary& d = own ? *own : walls;
+        pw_[m] = makeLaw
+        (
+            particleE_[m], particleNu_[m], Ew, nuw,
+            d.template lookupOrDefault<scalar>("e", ew),
+            d.template lookupOrDefault<scalar>("mu", muw),
+            d.template lookupOrDefault<scalar>("rollingFriction", muRw),
+            d
+        );
+    }
 }
 
 
@@ -509,7 +580,8 @@ Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
         dBl,
         p.isSphere(),
         labelPair(p.origProc(), p.origId()),
-        -1
+        -1,
+        p.material()
     };
 }
 
@@ -729,6 +801,17 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
             }
         }
         wallStart_[i + 1] = wallFaces_.size();
+
+        // In face order, not the order of the interaction list of the
+        // cell the parcel was in at the build: of two coplanar faces that
+        // both hold a contact point (on their shared edge) the first is
+        // kept, and the faces' planes differ at round-off; a restart,
+        // which builds the list elsewhere, must keep the same one
+        std::sort
+        (
+            wallFaces_.begin() + wallStart_[i],
+            wallFaces_.begin() + wallStart_[i + 1]
+        );
         if (wallStart_[i + 1] > wallStart_[i])
         {
             wallParcels_.append(i);
@@ -1036,12 +1119,13 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
       - pointVelocity(B.U, B.omega, xB, xc);
     const scalar mStar = A.mass*B.mass/(A.mass + B.mass);
 
+    const contactLaw& law = pp_[A.material*nMaterials_ + B.material];
     hertzPowers powers;
     const vector F = contactForce
     (
         c, vRel, mStar,
         normalMobility(A, xA, xc, c.n) + normalMobility(B, xB, xc, c.n),
-        pp_, xi, powers, energyWeight
+        law, xi, powers, energyWeight
     );
 
     const scalar twoDeltaBl = A.deltaBl + B.deltaBl;
@@ -1056,7 +1140,7 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 
     // Rolling friction, limited by the smaller rotational inertia
     const vector Mr =
-        pp_.muR > 0
+        law.muR > 0
       ? rollingTorque
         (
             c, F, A.omega - B.omega,
@@ -1065,12 +1149,12 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
                 cmptMin(A.p->principalMoments()),
                 cmptMin(B.p->principalMoments())
             ),
-            pp_, energyWeight
+            law, energyWeight
         )
       : Zero;
 
     // The elastic force of the change of R (see Description)
-    const scalar dUdR = hertzRadiusDerivative(c, pp_, powers);
+    const scalar dUdR = hertzRadiusDerivative(c, law, powers);
 
     // Torques about the centroids (Ruan Eq. 40)
     torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
@@ -1279,14 +1363,15 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
     vector& xi =
         p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
 
+    const contactLaw& law = pw_[b.material];
     hertzPowers powers;
     const vector F = contactForce
     (
-        c, vRel, b.mass, normalMobility(b, xp, xc, c.n), pw_, xi, powers
+        c, vRel, b.mass, normalMobility(b, xp, xc, c.n), law, xi, powers
     );
     const vector Mr =
-        pw_.muR > 0
-      ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), pw_)
+        law.muR > 0
+      ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), law)
       : Zero;
     if (b.deltaBl > 0 && c.overlap > 0.5*b.deltaBl)
     {
@@ -1297,7 +1382,7 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
         );
     }
     // The elastic torque of the change of R (see Description)
-    const scalar dUdR = hertzRadiusDerivative(c, pw_, powers);
+    const scalar dUdR = hertzRadiusDerivative(c, law, powers);
     force_[i] += F;
     torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
 }
@@ -1469,6 +1554,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
 )
 :
     ContactModel<CloudType>(dict, owner, typeName),
+    nMaterials_(owner.constProps().materials().size()),
     pp_(),
     pw_(),
     tangential_(tangentialModel::mindlin),
@@ -1563,11 +1649,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     wallFaceIsBox_(),
     recordContacts_(false),
     contacts_(),
-    particleE_(0),
-    particleNu_(0)
+    particleE_(),
+    particleNu_()
 {
     const dictionary& coeffs = this->coeffDict();
-    const dictionary& props = owner.constProps().dict();
 
     if
     (
@@ -1598,28 +1683,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
             << " is out of range [0, 1)" << exit(FatalIOError);
     }
 
-    // Reduced stiffness: all contact moduli scaled by chi
-    const scalar E = chi_*readPositive(props, "youngsModulus");
-    const scalar nu = props.get<scalar>("poissonsRatio");
-    particleE_ = E;
-    particleNu_ = nu;
-
-    pp_ = makeLaw
-    (
-        E, nu, E, nu,
-        coeffs.get<scalar>("e"), coeffs.get<scalar>("mu"),
-        coeffs
-    );
-
-    const dictionary& walls = coeffs.subDict("walls");
-    pw_ = makeLaw
-    (
-        E, nu,
-        chi_*readPositive(walls, "youngsModulus"),
-        walls.get<scalar>("poissonsRatio"),
-        walls.get<scalar>("e"), walls.get<scalar>("mu"),
-        walls
-    );
+    makeLaws(coeffs);
 
     const word tModel
     (
@@ -1676,12 +1740,29 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         << (deltaBl_ >= 0
             ? Foam::name(deltaBl_) + " m"
             : Foam::name(deltaBlRatio_) + " x smallest semi-axis").c_str()
-        << nl << "    E* = " << pp_.Estar
-        << ", G* = " << pp_.Gstar << ", e = " << pp_.e
-        << " (dashpot beta = " << pp_.beta << "), mu = " << pp_.mu
-        << ", tangential " << tModel << nl
-        << "    walls: E* = " << pw_.Estar << ", e = " << pw_.e
-        << " (beta = " << pw_.beta << "), mu = " << pw_.mu << endl;
+        << ", tangential " << tModel << endl;
+    const particleMaterials& materials = owner.constProps().materials();
+    for (label a = 0; a < nMaterials_; ++a)
+    {
+        const std::string what
+        (
+            nMaterials_ > 1 ? "    " + materials.name(a) + ": " : "    "
+        );
+        for (label b = a; b < nMaterials_; ++b)
+        {
+            const contactLaw& l = pairLaw(a, b);
+            const std::string with
+            (
+                nMaterials_ > 1 ? "with " + materials.name(b) + " " : ""
+            );
+            Info<< what.c_str() << with.c_str() << "E* = " << l.Estar << ", G* = " << l.Gstar
+                << ", e = " << l.e << " (dashpot beta = " << l.beta
+                << "), mu = " << l.mu << endl;
+        }
+        const contactLaw& l = wallLaw(a);
+        Info<< what.c_str() << "walls: E* = " << l.Estar << ", e = " << l.e
+            << " (beta = " << l.beta << "), mu = " << l.mu << endl;
+    }
 }
 
 
@@ -1742,11 +1823,20 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     scalar minLogTcArg = VGREAT;
     scalar minRayleigh = GREAT;
 
-    const scalar E = pp_.Estar;
-    const scalar logE2 = 2*Foam::log(E);
-    const scalar G = particleE_/(2*(1 + particleNu_));
+    // Per material: the log of E*^2 of two of its parcels, and the
+    // Rayleigh step's sqrt(G) (0.8766 + 0.163 nu)
+    scalarList logE2(nMaterials_);
+    scalarList rayleighFactor(nMaterials_);
+    forAll(logE2, m)
+    {
+        logE2[m] = 2*Foam::log(pairLaw(m, m).Estar);
+        rayleighFactor[m] =
+            Foam::sqrt(particleE_[m]/(2*(1 + particleNu_[m])))
+           *(0.8766 + 0.163*particleNu_[m]);
+    }
     for (const parcelType& p : this->owner())
     {
+        const label material = p.material();
         const vector& s = p.semiAxes();
         const scalar Rtip = sqr(cmptMin(s))/cmptMax(s);
         const scalar m = p.mass();
@@ -1755,22 +1845,22 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
         minLogTcArg = min
         (
             minLogTcArg,
-            2*Foam::log(0.5*m) - Foam::log(0.5*Rtip) - logE2 - Foam::log(v)
+            2*Foam::log(0.5*m) - Foam::log(0.5*Rtip) - logE2[material]
+          - Foam::log(v)
         );
 
         // Rayleigh time step, Rasera Eq. (13), for the report
         minRayleigh = min
         (
             minRayleigh,
-            cmptMin(s)*Foam::sqrt(p.rho())
+            cmptMin(s)*Foam::sqrt(p.rho())/rayleighFactor[material]
         );
     }
     reduce(minLogTcArg, minOp<scalar>());
     reduce(minRayleigh, minOp<scalar>());
     if (rayleighStep)
     {
-        *rayleighStep = minRayleigh*constant::mathematical::pi
-           /Foam::sqrt(G)/(0.8766 + 0.163*particleNu_);
+        *rayleighStep = minRayleigh*constant::mathematical::pi;
     }
     return
         0.2*minLogTcArg < Foam::log(GREAT/2.868)
@@ -1792,9 +1882,14 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
     }
     if (!(minTc*inputLimits::subCyclesMax >= deltaT*resolutionSteps_))
     {
+        scalar Estar = 0;
+        for (label m = 0; m < nMaterials_; ++m)
+        {
+            Estar = max(Estar, pairLaw(m, m).Estar);
+        }
         FatalIOErrorInFunction(this->coeffDict())
             << "The shortest collision time, " << minTc << " s (Hertz, of"
-            << " the fastest parcel of the cloud with E* = " << pp_.Estar
+            << " the fastest parcel of the cloud with E* = " << Estar
             << " Pa from the entries youngsModulus), resolved by"
             << " collisionResolutionSteps = " << resolutionSteps_
             << " steps, needs more than " << inputLimits::subCyclesMax

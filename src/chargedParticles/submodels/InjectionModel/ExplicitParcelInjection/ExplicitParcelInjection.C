@@ -235,13 +235,17 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
     rho_.setSize(n);
     q_.setSize(n);
     epsilonR_.setSize(n);
+    material_.setSize(n);
     semiAxes_.setSize(n);
     orientation_.setSize(n);
     omegaBody_.setSize(n);
 
     // The defaults are checked where constantProperties is read
-    const scalar rho0 =
-        this->owner().constProps().dict().template get<scalar>("rho0");
+    const particleMaterials& materials =
+        this->owner().constProps().materials();
+    word material0(materials.name(0));
+    this->coeffDict().readIfPresent("material", material0);
+    materials.find(material0, this->coeffDict(), "material");
     const scalar epsilonR0 = this->owner().constProps().epsilonR0();
 
     // Positions inside the mesh's bounding box (slightly inflated: the
@@ -296,6 +300,11 @@ void Foam::ExplicitParcelInjection<CloudType>::readParcels()
           + " m the largest semi-axis, below the speed of light"
         );
 
+        word material(material0);
+        pd.readIfPresent("material", material);
+        material_[i] = materials.find(material, pd, "material");
+        const scalar rho0 =
+            materials.dict(material_[i]).template get<scalar>("rho0");
         rho_[i] = readParcelScalar
         (
             pd, i, "rho", true, &rho0,
@@ -353,6 +362,7 @@ Foam::ExplicitParcelInjection<CloudType>::ExplicitParcelInjection
     rho_(im.rho_),
     q_(im.q_),
     epsilonR_(im.epsilonR_),
+    material_(im.material_),
     semiAxes_(im.semiAxes_),
     orientation_(im.orientation_),
     omegaBody_(im.omegaBody_),
@@ -457,6 +467,7 @@ void Foam::ExplicitParcelInjection<CloudType>::setProperties
     parcel.rho() = rho_[parcelI];
     parcel.q() = q_[parcelI];
     parcel.epsilonR() = epsilonR_[parcelI];
+    parcel.material() = material_[parcelI];
     parcel.orientation() = orientation_[parcelI];
     parcel.angularMomentum() = rigidBodyRotation::angularMomentum
     (

@@ -67,11 +67,133 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
             << coeffs.name().c_str() << exit(FatalIOError);
     }
     const dictionary& particles = coeffs.subDict("particles");
-    const scalar phiP =
-        fromWorkFunctions ? get(particles, "workFunction", false) : 0;
+    const particleMaterials& materials =
+        this->owner().constProps().materials();
+    const label n = materials.size();
 
-    // Like particles: Gamma = 0 (Rasera Eq. 18)
-    pp_.reset(new triboCharging(get(particles, "kappaC", true), 0));
+    // An entry of a material's own dictionary (own, may be null), else of
+    // its parent
+    const auto getOwn =
+        [&get]
+        (
+            const dictionary* own,
+            const dictionary& parent,
+            const word& key,
+            const bool positive
+        )
+    {
+        return own && own->found(key) ? get(*own, key, positive)
+                                      : get(parent, key, positive);
+    };
+
+    // Each material: the like contacts' kappa_c and (workFunction) its
+    // work function [J], from particles/<material>, else particles
+    scalarList kappaLike(n);
+    scalarList phi(n, Zero);
+    for (label m = 0; m < n; ++m)
+    {
+        const dictionary* own = particles.findDict(materials.name(m));
+        kappaLike[m] = getOwn(own, particles, "kappaC", true);
+        if (fromWorkFunctions)
+        {
+            phi[m] =
+                getOwn(own, particles, "workFunction", false)
+               *triboCharging::elementaryCharge;
+        }
+    }
+
+    // Gamma within the accepted range (Gamma given or from work functions)
+    const auto checkGamma =
+        [fromWorkFunctions]
+        (
+            const scalar Gamma,
+            const dictionary& d,
+            const std::string& where
+        )
+    {
+        if (!(mag(Gamma) <= inputLimits::fieldMax))
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry "
+                << (
+                       fromWorkFunctions
+                     ? "workFunction (with cutoffDistance and the other"
+                       " material's workFunction)"
+                     : "Gamma"
+                   )
+                << where.c_str() << " in " << d.name().c_str()
+                << " gives Gamma = " << Gamma
+                << " V/m: out of range, |Gamma| must be at most "
+                << inputLimits::fieldMax << " V/m" << exit(FatalIOError);
+        }
+    };
+
+    // Particle pairs: like materials Gamma = 0 (Rasera Eq. 18), unlike
+    // from the work functions (Eqs. 14-15) or given per pair
+    boolList swapped;
+    const List<const dictionary*> pairs
+    (
+        coeffs.found("materialPairs")
+      ? materials.pairEntries(coeffs.subDict("materialPairs"), swapped)
+      : List<const dictionary*>(n*n, nullptr)
+    );
+    pp_.setSize(n*n);
+    for (label a = 0; a < n; ++a)
+    {
+        for (label b = 0; b < n; ++b)
+        {
+            const label ab = materials.pairIndex(a, b);
+            const dictionary* d = pairs[ab];
+            const scalar kappaC =
+                d && d->found("kappaC") ? get(*d, "kappaC", true)
+              : a == b ? kappaLike[a]
+              : get(particles, "kappaC", true);
+            if (d && d->found("Gamma") && (a == b || fromWorkFunctions))
+            {
+                FatalIOErrorInFunction(*d)
+                    << "Entry Gamma in " << d->name().c_str() << " is not"
+                    << " used: "
+                    << (
+                           a == b
+                         ? "like materials have Gamma = 0 (Rasera Eq. 18)"
+                         : "workFunction gives Gamma from the materials'"
+                           " work functions (Rasera Eqs. 14-15)"
+                       )
+                    << exit(FatalIOError);
+            }
+            scalar Gamma = 0;
+            if (fromWorkFunctions)
+            {
+                Gamma = triboCharging::GammaFromWorkFunctions
+                (
+                    phi[a], phi[b], deltaE
+                );
+                checkGamma(Gamma, particles, "");
+            }
+            else if (a != b)
+            {
+                if (!d || !d->found("Gamma"))
+                {
+                    FatalIOErrorInFunction(coeffs)
+                        << "Materials " << materials.name(a) << " and "
+                        << materials.name(b) << " have no charging field"
+                        << " Gamma in " << coeffs.name().c_str() << ": give"
+                        << " materialPairs { <name> { materials ("
+                        << materials.name(a) << " " << materials.name(b)
+                        << "); Gamma ...; } } (the Gamma of the first from"
+                        << " the second [V/m], Rasera Eqs. 16, 18)"
+                        << exit(FatalIOError);
+                }
+                Gamma = get(*d, "Gamma", false);
+                checkGamma(Gamma, *d, "");
+                if (swapped[ab])
+                {
+                    Gamma = -Gamma;
+                }
+            }
+            pp_.set(ab, new triboCharging(kappaC, Gamma));
+        }
+    }
 
     if (!coeffs.isDict("walls"))
     {
@@ -83,8 +205,10 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
     }
     const dictionary& walls = coeffs.subDict("walls");
 
+    // Each wall patch and material: walls/<patch>/<material> over
+    // walls/<patch> (kappaC; Gamma or, with work functions, the wall's)
     const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
-    walls_.setSize(patches.size());
+    walls_.setSize(n*patches.size());
     forAll(patches, patchi)
     {
         if (!isA<wallPolyPatch>(patches[patchi]))
@@ -104,40 +228,57 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                 << exit(FatalIOError);
         }
         const dictionary& d = *dPtr;
-        const scalar kappaC = get(d, "kappaC", true);
-        const scalar Gamma =
+        const scalar phiWall =
             fromWorkFunctions
-          ? triboCharging::GammaFromWorkFunctions
-            (
-                phiP*triboCharging::elementaryCharge,
-                get(d, "workFunction", false)*triboCharging::elementaryCharge,
-                deltaE
-            )
-          : get(d, "Gamma", false);
-
-        if (!(mag(Gamma) <= inputLimits::fieldMax))
+          ? get(d, "workFunction", false)*triboCharging::elementaryCharge
+          : 0;
+        for (label m = 0; m < n; ++m)
         {
-            FatalIOErrorInFunction(d)
-                << "Entry "
-                << (
-                       fromWorkFunctions
-                     ? "workFunction (with cutoffDistance and the particles'"
-                       " workFunction)"
-                     : "Gamma"
-                   )
-                << " of wall patch " << name << " in " << d.name().c_str()
-                << " gives Gamma = " << Gamma << " V/m: out of range, |Gamma|"
-                << " must be at most " << inputLimits::fieldMax << " V/m"
-                << exit(FatalIOError);
-        }
-        walls_.set(patchi, new triboCharging(kappaC, Gamma));
+            const dictionary* own = d.findDict(materials.name(m));
+            const scalar kappaC = getOwn(own, d, "kappaC", true);
+            const scalar Gamma =
+                fromWorkFunctions
+              ? triboCharging::GammaFromWorkFunctions(phi[m], phiWall, deltaE)
+              : getOwn(own, d, "Gamma", false);
+            checkGamma(Gamma, own ? *own : d, " of wall patch " + name);
+            walls_.set(n*patchi + m, new triboCharging(kappaC, Gamma));
 
-        Info<< "    tribocharging on wall patch " << name
-            << ": kappa_c = " << kappaC << ", Gamma = " << Gamma << " V/m"
-            << endl;
+            Info<< "    tribocharging on wall patch " << name
+                << (n > 1 ? ", " + materials.name(m) : std::string()).c_str()
+                << ": kappa_c = " << kappaC << ", Gamma = " << Gamma
+                << " V/m" << endl;
+        }
     }
-    Info<< "    tribocharging particle-particle: kappa_c = "
-        << pp_->kappaC() << ", Gamma = 0 (like particles)" << endl;
+    for (label a = 0; a < n; ++a)
+    {
+        for (label b = a; b < n; ++b)
+        {
+            const triboCharging& law = pairLaw(a, b);
+            Info<< "    tribocharging particle-particle"
+                << (
+                       n > 1
+                     ? " " + materials.name(a) + "-" + materials.name(b)
+                     : std::string()
+                   ).c_str()
+                << ": kappa_c = " << law.kappaC() << ", Gamma = "
+                << law.Gamma() << " V/m"
+                << (a == b ? " (like particles)" : "") << endl;
+        }
+    }
+}
+
+
+template<class CloudType>
+const Foam::triboCharging& Foam::RaseraTriboCharging<CloudType>::lawOf
+(
+    const ParcelContact<parcelType>& c
+) const
+{
+    const label a = c.pA->material();
+    return
+        c.pB
+      ? pairLaw(a, c.pB->material())
+      : walls_[nMaterials_*c.patchi + a];
 }
 
 
@@ -238,6 +379,7 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
 )
 :
     TriboChargingModel<CloudType>(dict, owner, type),
+    nMaterials_(owner.constProps().materials().size()),
     pp_(),
     walls_(),
     // Per patch that is not a processor patch: the same list everywhere
@@ -294,7 +436,8 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
 )
 :
     TriboChargingModel<CloudType>(tm),
-    pp_(new triboCharging(tm.pp_())),
+    nMaterials_(tm.nMaterials_),
+    pp_(tm.pp_),
     walls_(tm.walls_),
     wallCharge0_(tm.wallCharge0_),
     wallChargeLocal_(tm.wallChargeLocal_),
@@ -329,7 +472,7 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     forAll(contacts, k)
     {
         const ParcelContact<parcelType>& c = contacts[k];
-        dq_[k] = transferOf(c, c.pB ? pp_() : walls_[c.patchi]);
+        dq_[k] = transferOf(c, lawOf(c));
         if (c.referred && dq_[k] != 0)
         {
             const parcelType& pA = *c.pA;
@@ -461,7 +604,7 @@ void Foam::RaseraTriboCharging<CloudType>::checkCharge
     {
         return;
     }
-    const triboCharging& law = c.pB ? pp_() : walls_[c.patchi];
+    const triboCharging& law = lawOf(c);
     const dictionary& coeffs = this->coeffDict();
     FatalIOErrorInFunction(coeffs)
         << "Contact charging gave parcel (origProc " << p.origProc()
@@ -507,6 +650,17 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
 
     const scalarField qWalls(wallCharge());
     const scalar qParcels = this->owner().totalCharge();
+
+    // Each material's parcel charge (several materials)
+    scalarField qMaterials(nMaterials_ > 1 ? nMaterials_ : 0, Zero);
+    if (nMaterials_ > 1)
+    {
+        for (const parcelType& p : this->owner())
+        {
+            qMaterials[p.material()] += p.nParticle()*p.q();
+        }
+        Pstream::listCombineGather(qMaterials, plusEqOp<scalar>());
+    }
     const scalar qOut = sum(this->owner().escapedCharge());
     const label nPair = returnReduce(nPairCharging_, sumOp<label>());
     const label nWall = returnReduce(nWallCharging_, sumOp<label>());
@@ -539,30 +693,40 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
             << " [C]: charge received by each wall patch since the start;"
             << " balance = parcels + walls + outflow (charge carried out by"
             << " escaping parcels)" << nl << "# time parcels";
-        forAll(walls_, patchi)
+        forAll(patches, patchi)
         {
-            if (walls_.set(patchi))
+            if (walls_.set(nMaterials_*patchi))
             {
                 os  << ' ' << patches[patchi].name();
             }
         }
-        os  << " balance nPairContactsCharging nWallContactsCharging outflow"
-            << nl;
+        os  << " balance nPairContactsCharging nWallContactsCharging outflow";
+        const particleMaterials& materials =
+            this->owner().constProps().materials();
+        forAll(qMaterials, m)
+        {
+            os  << " parcels:" << materials.name(m);
+        }
+        os  << nl;
     }
 
     OFstream& os = filePtr_();
     scalar balance = qParcels + qOut;
     os  << time.value() << ' ' << qParcels;
-    forAll(walls_, patchi)
+    forAll(patches, patchi)
     {
-        if (walls_.set(patchi))
+        if (walls_.set(nMaterials_*patchi))
         {
             os  << ' ' << qWalls[patchi];
             balance += qWalls[patchi];
         }
     }
-    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << ' ' << qOut
-        << endl;
+    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << ' ' << qOut;
+    forAll(qMaterials, m)
+    {
+        os  << ' ' << qMaterials[m];
+    }
+    os  << endl;
 }
 
 
