@@ -714,13 +714,16 @@ Foam::shapeSelfField::localProblem Foam::shapeSelfField::pointProblem
     lp.w = weights;
     lp.src.setSize(rows.size(), 0);
     lp.exact = Zero;
-    if (imageSign != 0)
+
+    // A point in the wall's plane (to round-off of its distance from the
+    // origin) coincides with its image: the pair is no image problem (an
+    // odd one has no charge, and the exact field of an even one is
+    // singular), the point's own field is kept
+    const scalar h = (x - wallPoint) & wallNormal;
+    if (imageSign != 0 && mag(h) > 1e-12*mag(x - wallPoint) + VSMALL)
     {
         // The image in the wall's plane, its exact field subtracted
-        const point xImage
-        (
-            x - 2*((x - wallPoint) & wallNormal)*wallNormal
-        );
+        const point xImage(x - 2*h*wallNormal);
         lp.x.append(xImage);
         lp.q.append(imageSign);
         lp.T.append(tensor::I - 2*sqr(wallNormal));

@@ -301,7 +301,9 @@ template<class CloudType>
 Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
 (
     const ParcelContact<parcelType>& pc,
-    const triboCharging& law
+    const triboCharging& law,
+    scalar& dA,
+    bool& impact
 )
 {
     const ellipsoidContact::result& c = pc.contact;
@@ -323,7 +325,8 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::transferOf
             pc.radiusA
         ).collisionData();
 
-    const scalar dA = A - Amax;
+    impact = Amax == 0;
+    dA = A - Amax;
     if (dA <= 0)
     {
         return 0;
@@ -387,6 +390,10 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(owner.mesh().boundaryMesh().nNonProcessor(), Zero),
     nPairCharging_(0),
     nWallCharging_(0),
+    nPairImpacts_(0),
+    nWallImpacts_(0),
+    pairArea_(0),
+    wallArea_(0),
     wallImages_
     (
         this->coeffDict().template lookupOrDefault<bool>("wallImages", false)
@@ -443,6 +450,10 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     wallChargeLocal_(tm.wallChargeLocal_),
     nPairCharging_(tm.nPairCharging_),
     nWallCharging_(tm.nWallCharging_),
+    nPairImpacts_(tm.nPairImpacts_),
+    nWallImpacts_(tm.nWallImpacts_),
+    pairArea_(tm.pairArea_),
+    wallArea_(tm.wallArea_),
     wallImages_(tm.wallImages_),
     balanceInterval_(tm.balanceInterval_),
     filePtr_(),
@@ -472,14 +483,30 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
     forAll(contacts, k)
     {
         const ParcelContact<parcelType>& c = contacts[k];
-        dq_[k] = transferOf(c, lawOf(c));
+        scalar dA = 0;
+        bool impact = false;
+        dq_[k] = transferOf(c, lawOf(c), dA, impact);
+
+        // A pair across processors is booked by the lower side only
+        const bool lower =
+            !c.referred
+         || c.pA->origProc() < c.pB->origProc()
+         || (
+                c.pA->origProc() == c.pB->origProc()
+             && c.pA->origId() < c.pB->origId()
+            );
+        if (dA > 0 && lower)
+        {
+            (c.pB ? pairArea_ : wallArea_) += dA;
+            if (impact)
+            {
+                ++(c.pB ? nPairImpacts_ : nWallImpacts_);
+            }
+        }
+
         if (c.referred && dq_[k] != 0)
         {
-            const parcelType& pA = *c.pA;
             const parcelType& pB = *c.pB;
-            const bool lower =
-                pA.origProc() < pB.origProc()
-             || (pA.origProc() == pB.origProc() && pA.origId() < pB.origId());
             if (lower)
             {
                 const label proci = c.referredFrom;
@@ -666,6 +693,14 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
     const label nWall = returnReduce(nWallCharging_, sumOp<label>());
     nPairCharging_ = 0;
     nWallCharging_ = 0;
+    const label nPairImpacts = returnReduce(nPairImpacts_, sumOp<label>());
+    const label nWallImpacts = returnReduce(nWallImpacts_, sumOp<label>());
+    const scalar pairArea = returnReduce(pairArea_, sumOp<scalar>());
+    const scalar wallArea = returnReduce(wallArea_, sumOp<scalar>());
+    nPairImpacts_ = 0;
+    nWallImpacts_ = 0;
+    pairArea_ = 0;
+    wallArea_ = 0;
 
     const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
 
@@ -700,7 +735,8 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
                 os  << ' ' << patches[patchi].name();
             }
         }
-        os  << " balance nPairContactsCharging nWallContactsCharging outflow";
+        os  << " balance nPairContactsCharging nWallContactsCharging outflow"
+            << " nPairImpacts nWallImpacts pairImpactArea wallImpactArea";
         const particleMaterials& materials =
             this->owner().constProps().materials();
         forAll(qMaterials, m)
@@ -721,7 +757,9 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
             balance += qWalls[patchi];
         }
     }
-    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << ' ' << qOut;
+    os  << ' ' << balance << ' ' << nPair << ' ' << nWall << ' ' << qOut
+        << ' ' << nPairImpacts << ' ' << nWallImpacts << ' ' << pairArea
+        << ' ' << wallArea;
     forAll(qMaterials, m)
     {
         os  << ' ' << qMaterials[m];
