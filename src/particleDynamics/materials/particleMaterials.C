@@ -118,13 +118,18 @@ Foam::label Foam::particleMaterials::check
 
 Foam::List<const Foam::dictionary*> Foam::particleMaterials::pairEntries
 (
-    const dictionary& pairs,
+    const dictionary& coeffs,
     boolList& swapped
 ) const
 {
     const label n = size();
     List<const dictionary*> entries(n*n, nullptr);
     swapped = boolList(n*n, false);
+    if (!coeffs.found("materialPairs"))
+    {
+        return entries;
+    }
+    const dictionary& pairs = coeffs.subDict("materialPairs");
 
     for (const entry& e : pairs)
     {

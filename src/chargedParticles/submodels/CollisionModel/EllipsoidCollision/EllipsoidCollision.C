@@ -241,9 +241,7 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     boolList swapped;
     const List<const dictionary*> pairs
     (
-        coeffs.found("materialPairs")
-      ? materials.pairEntries(coeffs.subDict("materialPairs"), swapped)
-      : List<const dictionary*>(n*n, nullptr)
+        materials.pairEntries(coeffs, swapped)
     );
     pp_.setSize(n*n);
     for (label a = 0; a < n; ++a)

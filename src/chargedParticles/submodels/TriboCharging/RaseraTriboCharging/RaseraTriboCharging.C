@@ -133,9 +133,7 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
     boolList swapped;
     const List<const dictionary*> pairs
     (
-        coeffs.found("materialPairs")
-      ? materials.pairEntries(coeffs.subDict("materialPairs"), swapped)
-      : List<const dictionary*>(n*n, nullptr)
+        materials.pairEntries(coeffs, swapped)
     );
     pp_.setSize(n*n);
     for (label a = 0; a < n; ++a)
