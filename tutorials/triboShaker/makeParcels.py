@@ -25,7 +25,18 @@ for attempt in range(200000):
     if all(np.linalg.norm(x - y) > d + gap for y in placed):
         placed.append(x)
 if len(placed) < N:
-    sys.exit(f"makeParcels.py: found room for {len(placed)} of {N} spheres")
+    # Dense packings (about 40 spheres) are beyond random placement: the
+    # sites of a square lattice of spacing d + gap inside the capsule, N of
+    # them at random
+    s = d + gap
+    m = int((R - r - gap)//s) + 1
+    sites = [np.array([i*s + 0.5*s*(m % 2 == 0), j*s + 0.5*s*(m % 2 == 0), r + gap + k*s])
+             for i in range(-m, m + 1) for j in range(-m, m + 1)
+             for k in range(int((H - d - 2*gap)//s) + 1)]
+    sites = [x for x in sites if np.hypot(x[0], x[1]) <= R - r - gap]
+    if len(sites) < N:
+        sys.exit(f"makeParcels.py: room for {len(sites)} of {N} spheres")
+    placed = [sites[i] for i in rng.choice(len(sites), N, replace=False)]
 
 lines = []
 for x in placed:
