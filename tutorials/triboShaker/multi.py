@@ -146,7 +146,7 @@ def main():
             qp = qh[i] if tt > 0 else np.zeros(N)
             print(f"| {tt:g} | " + " | ".join(f"{v*1e9:.3f}" for v in vals)
                   + f" | {vals.mean()*1e9:.3f} | {(vals.max() - vals.min())*1e9:.3f}"
-                  f" | {vals.mean()/qsat:.3f} | {qp.min()*1e9:.3f} | {qp.max()*1e9:.3f}"
+                  f" | {vals.mean()/qsat + 0.0:.3f} | {qp.min()*1e9:.3f} | {qp.max()*1e9:.3f}"
                   f" | {qp.mean()*1e9:.3f} |")
 
     # Packing: Fig. 14
