@@ -11,7 +11,10 @@
 #     charges bipolar (PTFE negative, nylon positive), each material's
 #     charge is written and the particles + walls keep the charge to
 #     round-off; a restart continues exactly, 2 processors reproduce the
-#     serial run.
+#     serial run;
+#  3. OpenFOAM's manualInjection with a material (and an injectorID): its
+#     parcels are of that material and density, with a mass basis they
+#     carry the model's massTotal.
 . "$(dirname "$0")/common.sh.inc"
 
 # ---- 1. head-on PTFE-nylon --------------------------------------------------
@@ -226,3 +229,52 @@ run reconstructPar reconstructPar || fail "triboMixture.parallel (reconstructPar
 $PY "$tools/compareClouds.py" "$work/serial/0.04" "$work/parallel/0.04" \
     --tol 1e-10 --qtol 1e-10 --name triboMixture.parallel
 mixture "$work/parallel" parallel
+
+# ---- 3. a material from OpenFOAM's injection model --------------------------
+# gasSettling's manualInjection with `material light; injectorID 1;`: every
+# parcel is of that material and density; with parcelBasisType mass the
+# parcels carry the model's mass (nParticle follows the density)
+for basis in fixed mass
+do
+    copyCase gasSettling "$work/injector-$basis"
+    cd "$work/injector-$basis" || exit 1
+    $PY - "$basis" <<'PYEOF'
+import sys
+p = "constant/cloudProperties"
+s = open(p).read()
+s = s.replace("    shape           (2 1 1);", """    shape           (2 1 1);
+    materials { glass {} light { rho0 1000; } }""", 1)
+s = s.replace("            type            manualInjection;", """            type            manualInjection;
+            material        light;
+            injectorID      1;""", 1)
+if sys.argv[1] == "mass":
+    s = s.replace("            massTotal       0;\n            parcelBasisType fixed;\n            nParticle       20;",
+                  "            massTotal       2e-6;\n            parcelBasisType mass;", 1)
+open(p, "w").write(s)
+PYEOF
+    setEndTime 1e-3
+    setWriteInterval 2
+    { run makePositions $PY makePositions.py --n 20 && run blockMesh blockMesh \
+        && run solver chargedDPMFoam; } || fail "triboMixture.injector.$basis (solver failed)"
+    $PY - "$basis" <<'PYEOF'
+import math, re, sys
+basis = sys.argv[1]
+def field(name):
+    t = open("0.001/lagrangian/cloud/" + name).read().split("// * * *", 1)[-1]
+    m = re.search(r"(\d+)\s*(?:\{([^}]*)\}|\(([^)]*)\))", t)
+    n = int(m.group(1))
+    return [float(m.group(2))]*n if m.group(2) is not None else [float(v) for v in m.group(3).split()]
+mat, rho, npart, d = field("material"), field("rho"), field("nParticle"), field("d")
+ok = len(mat) == 20 and all(m == 1 for m in mat) and all(r == 1000 for r in rho)
+print(f"{'PASS' if ok else 'FAIL'}: triboMixture.injector.{basis}.material ({len(mat)} parcels of material "
+      f"{sorted(set(mat))} (light), rho {sorted(set(rho))} kg/m3)")
+if basis == "mass":
+    mass = sum(n*r*math.pi/6*x**3 for n, r, x in zip(npart, rho, d))
+    ok = abs(mass/2e-6 - 1) < 1e-12
+    print(f"{'PASS' if ok else 'FAIL'}: triboMixture.injector.mass.massTotal (the parcels carry {mass:.10e} kg, "
+          f"massTotal 2e-6 kg; nParticle {npart[0]:.6g} of the light material)")
+else:
+    ok = all(n == 20 for n in npart)
+    print(f"{'PASS' if ok else 'FAIL'}: triboMixture.injector.fixed.nParticle (nParticle {sorted(set(npart))}, given 20)")
+PYEOF
+done

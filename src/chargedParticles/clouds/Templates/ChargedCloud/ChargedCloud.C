@@ -197,6 +197,81 @@ void Foam::ChargedCloud<CloudType>::checkCoincident() const
 
 
 template<class CloudType>
+void Foam::ChargedCloud<CloudType>::readInjectorMaterials()
+{
+    const particleMaterials& materials = constProps_.materials();
+    forAll(this->injectors(), i)
+    {
+        const auto& injector = this->injectors()[i];
+        const dictionary& d = injector.coeffDict();
+        if (!d.found("material") || injector.type() == "explicitParcels")
+        {
+            continue;
+        }
+        const label m = materials.find(d.get<word>("material"), d, "material");
+        const label id = d.lookupOrDefault<label>("injectorID", -1);
+        if (id < 0)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry material of injection model "
+                << injector.modelName() << " in " << d.name().c_str()
+                << " needs an entry injectorID, a number >= 0 of its own"
+                << " (OpenFOAM gives it to the model's parcels as their"
+                << " typeId, which names their material)" << exit(FatalIOError);
+        }
+        const auto iter = injectorMaterial_.cfind(id);
+        if (iter.found() && iter.val() != m)
+        {
+            FatalIOErrorInFunction(d)
+                << "Entry injectorID " << id << " of injection model "
+                << injector.modelName() << " in " << d.name().c_str()
+                << " is also the id of a model of material "
+                << materials.name(iter.val()) << ": give each material's"
+                << " models their own injectorID" << exit(FatalIOError);
+        }
+        injectorMaterial_.set(id, m);
+        injectorMassBasis_.set
+        (
+            id,
+            d.lookupOrDefault<word>("parcelBasisType", "mass") == "mass"
+        );
+        Info<< "    injection model " << injector.modelName()
+            << ": material " << materials.name(m) << " (injectorID " << id
+            << ")" << endl;
+    }
+}
+
+
+template<class CloudType>
+void Foam::ChargedCloud<CloudType>::assignInjectedMaterials()
+{
+    if (injectorMaterial_.empty())
+    {
+        return;
+    }
+    const particleMaterials& materials = constProps_.materials();
+    for (parcelType& p : *this)
+    {
+        if (p.material() != -1)
+        {
+            continue;
+        }
+        const auto iter = injectorMaterial_.cfind(p.typeId());
+        const label m = iter.found() ? iter.val() : 0;
+        p.material() = m;
+        const scalar rho = materials.dict(m).template get<scalar>("rho0");
+        const auto massBasis = injectorMassBasis_.cfind(p.typeId());
+        if (massBasis.found() && massBasis.val())
+        {
+            // The model's mass per parcel, of particles of this density
+            p.nParticle() *= p.rho()/rho;
+        }
+        p.rho() = rho;
+    }
+}
+
+
+template<class CloudType>
 void Foam::ChargedCloud<CloudType>::cloudReset(ChargedCloud<CloudType>& c)
 {
     CloudType::cloudReset(c);
@@ -227,7 +302,9 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     // One entry per patch that is not a processor patch: the same list on
     // every processor (processor patches differ in number between them)
     escapedCharge0_(this->mesh().boundaryMesh().nNonProcessor(), Zero),
-    escapedChargeLocal_(this->mesh().boundaryMesh().nNonProcessor(), Zero)
+    escapedChargeLocal_(this->mesh().boundaryMesh().nNonProcessor(), Zero),
+    injectorMaterial_(),
+    injectorMassBasis_()
 {
     // Charge that left in an earlier run (restart)
     scalarField q0;
@@ -241,6 +318,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     {
         checkConstProps();
         checkInjectors();
+        readInjectorMaterials();
         checkPatchInteraction();
         setModels();
 
@@ -302,9 +380,11 @@ void Foam::ChargedCloud<CloudType>::setParcelThermoProperties
 {
     CloudType::setParcelThermoProperties(parcel, lagrangianDt);
 
-    // The first material (OpenFOAM's injection models; explicitParcels
-    // sets its own) and its density
-    parcel.material() = 0;
+    // The first material, or pending (-1) when injection models have
+    // their own: the model is known from the parcel's typeId only after
+    // the injection (assignInjectedMaterials); explicitParcels sets its
+    // own. The first material's density until then
+    parcel.material() = injectorMaterial_.empty() ? 0 : -1;
     parcel.rho() =
         constProps_.materials().dict(0).template get<scalar>("rho0");
     parcel.q() = constProps_.q0();
@@ -322,11 +402,14 @@ void Foam::ChargedCloud<CloudType>::checkParcelProperties
 {
     CloudType::checkParcelProperties(parcel, lagrangianDt, fullyDescribed);
     forcesStale_ = true;
-    constProps_.materials().check
-    (
-        parcel.material(),
-        this->subModelProperties().subDict("injectionModels")
-    );
+    if (parcel.material() != -1)
+    {
+        constProps_.materials().check
+        (
+            parcel.material(),
+            this->subModelProperties().subDict("injectionModels")
+        );
+    }
 
     // Whatever the injection model (explicitParcels names the parcel and
     // its entry before this): a value out of range is reported with the
