@@ -9,7 +9,8 @@
 # parcel U, omega, eulerAngles; NaN p3m rCut, a non-bool fastErfc, Ne < 0;
 # the BEM solver's maxPreconditionerPatches, directOutputMax, nearFactor;
 # several materials: an unknown name, an unlike pair without Gamma, a
-# Gamma for like materials, a pair given twice, a material's rho0;
+# Gamma for like materials, a pair given twice, a material's rho0, an
+# OpenFOAM injection model's material without an injectorID;
 # non-finite carrierProperties (rho, mu, U). Non-finite values come from
 # #eval with FOAM_SIGFPE=false (the reader refuses nan and inf).
 # The escapes of the dictionary fuzzer (doc/extremes.md): maxCo out of
@@ -277,6 +278,10 @@ FOAM_SIGFPE=false badCase nanSizeDistribution 'value +8e-5;' 'value #eval{sqrt(-
     'The parcels of injection model column in .* have a total volume of -?nan m3'
 badCase hugeNParticle 'nParticle +20;' 'nParticle 1e300;' \
     'A parcel \(origProc 0, origId [0-9]+\) of the injection models .* carries nParticle = 1[.0-9]*e\+300 particles of .* out of range'
+badCase injectorWithoutId 'shape +\(2 1 1\);' \
+    'shape (2 1 1); materials { glass {} light { rho0 1000; } }' \
+    'Entry material of injection model column in .* needs an entry injectorID' \
+    'type +manualInjection;' 'type manualInjection; material light;'
 solver=chargedParticleFoam
 
 base=tribo
