@@ -11,40 +11,87 @@
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
+Foam::scalar Foam::RaseraTriboCharging<CloudType>::get
+(
+    const dictionary& d,
+    const word& key,
+    const bool positive
+)
+{
+    if (!d.found(key))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry " << key << " is missing in " << d.name().c_str()
+            << exit(FatalIOError);
+    }
+    const scalar v = d.get<scalar>(key);
+    if
+    (
+        !std::isfinite(v)
+     || (positive && !(v >= 0 && v <= inputLimits::large))
+    )
+    {
+        const std::string range
+        (
+            positive
+          ? "it must be finite and >= 0, at most "
+          + Foam::name(inputLimits::large)
+          : "it must be finite"
+        );
+        FatalIOErrorInFunction(d)
+            << "Entry " << key << " = " << v << " in "
+            << d.name().c_str() << " is out of range: " << range.c_str()
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RaseraTriboCharging<CloudType>::getOwn
+(
+    const dictionary* own,
+    const dictionary& parent,
+    const word& key,
+    const bool positive
+)
+{
+    return own && own->found(key) ? get(*own, key, positive)
+                                  : get(parent, key, positive);
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::checkGamma
+(
+    const scalar Gamma,
+    const dictionary& d,
+    const std::string& where,
+    const bool fromWorkFunctions
+)
+{
+    if (!(mag(Gamma) <= inputLimits::fieldMax))
+    {
+        FatalIOErrorInFunction(d)
+            << "Entry "
+            << (
+                   fromWorkFunctions
+                 ? "workFunction (with cutoffDistance and the other"
+                   " material's workFunction)"
+                 : "Gamma"
+               )
+            << where.c_str() << " in " << d.name().c_str()
+            << " gives Gamma = " << Gamma
+            << " V/m: out of range, |Gamma| must be at most "
+            << inputLimits::fieldMax << " V/m" << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
 void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
 {
     const dictionary& coeffs = this->coeffDict();
-
-    // A named, finite, in-range scalar of dictionary d
-    auto get = [](const dictionary& d, const word& key, const bool positive)
-    {
-        if (!d.found(key))
-        {
-            FatalIOErrorInFunction(d)
-                << "Entry " << key << " is missing in " << d.name().c_str()
-                << exit(FatalIOError);
-        }
-        const scalar v = d.get<scalar>(key);
-        if
-        (
-            !std::isfinite(v)
-         || (positive && !(v >= 0 && v <= inputLimits::large))
-        )
-        {
-            const std::string range
-            (
-                positive
-              ? "it must be finite and >= 0, at most "
-              + Foam::name(inputLimits::large)
-              : "it must be finite"
-            );
-            FatalIOErrorInFunction(d)
-                << "Entry " << key << " = " << v << " in "
-                << d.name().c_str() << " is out of range: " << range.c_str()
-                << exit(FatalIOError);
-        }
-        return v;
-    };
 
     scalar deltaE = 0;
     if (fromWorkFunctions)
@@ -66,30 +113,32 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
             << " efficiency, Rasera Eq. 16) is missing in "
             << coeffs.name().c_str() << exit(FatalIOError);
     }
+
+    // Each material's work function [J] (workFunction form)
+    scalarList phi;
+    readPairLaws(fromWorkFunctions, deltaE, phi);
+    readWallLaws(fromWorkFunctions, deltaE, phi);
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::readPairLaws
+(
+    const bool fromWorkFunctions,
+    const scalar deltaE,
+    scalarList& phi
+)
+{
+    const dictionary& coeffs = this->coeffDict();
     const dictionary& particles = coeffs.subDict("particles");
     const particleMaterials& materials =
         this->owner().constProps().materials();
     const label n = materials.size();
 
-    // An entry of a material's own dictionary (own, may be null), else of
-    // its parent
-    const auto getOwn =
-        [&get]
-        (
-            const dictionary* own,
-            const dictionary& parent,
-            const word& key,
-            const bool positive
-        )
-    {
-        return own && own->found(key) ? get(*own, key, positive)
-                                      : get(parent, key, positive);
-    };
-
     // Each material: the like contacts' kappa_c and (workFunction) its
     // work function [J], from particles/<material>, else particles
     scalarList kappaLike(n);
-    scalarList phi(n, Zero);
+    phi.setSize(n, Zero);
     for (label m = 0; m < n; ++m)
     {
         const dictionary* own = particles.findDict(materials.name(m));
@@ -101,32 +150,6 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                *triboCharging::elementaryCharge;
         }
     }
-
-    // Gamma within the accepted range (Gamma given or from work functions)
-    const auto checkGamma =
-        [fromWorkFunctions]
-        (
-            const scalar Gamma,
-            const dictionary& d,
-            const std::string& where
-        )
-    {
-        if (!(mag(Gamma) <= inputLimits::fieldMax))
-        {
-            FatalIOErrorInFunction(d)
-                << "Entry "
-                << (
-                       fromWorkFunctions
-                     ? "workFunction (with cutoffDistance and the other"
-                       " material's workFunction)"
-                     : "Gamma"
-                   )
-                << where.c_str() << " in " << d.name().c_str()
-                << " gives Gamma = " << Gamma
-                << " V/m: out of range, |Gamma| must be at most "
-                << inputLimits::fieldMax << " V/m" << exit(FatalIOError);
-        }
-    };
 
     // Particle pairs: like materials Gamma = 0 (Rasera Eq. 18), unlike
     // from the work functions (Eqs. 14-15) or given per pair
@@ -166,7 +189,7 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                 (
                     phi[a], phi[b], deltaE
                 );
-                checkGamma(Gamma, particles, "");
+                checkGamma(Gamma, particles, "", fromWorkFunctions);
             }
             else if (a != b)
             {
@@ -183,7 +206,7 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                         << exit(FatalIOError);
                 }
                 Gamma = get(*d, "Gamma", false);
-                checkGamma(Gamma, *d, "");
+                checkGamma(Gamma, *d, "", fromWorkFunctions);
                 if (swapped[ab])
                 {
                     Gamma = -Gamma;
@@ -192,6 +215,38 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
             pp_.set(ab, new triboCharging(kappaC, Gamma));
         }
     }
+
+    for (label a = 0; a < n; ++a)
+    {
+        for (label b = a; b < n; ++b)
+        {
+            const triboCharging& law = pairLaw(a, b);
+            Info<< "    tribocharging particle-particle"
+                << (
+                       n > 1
+                     ? " " + materials.name(a) + "-" + materials.name(b)
+                     : std::string()
+                   ).c_str()
+                << ": kappa_c = " << law.kappaC() << ", Gamma = "
+                << law.Gamma() << " V/m"
+                << (a == b ? " (like particles)" : "") << endl;
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::readWallLaws
+(
+    const bool fromWorkFunctions,
+    const scalar deltaE,
+    const scalarList& phi
+)
+{
+    const dictionary& coeffs = this->coeffDict();
+    const particleMaterials& materials =
+        this->owner().constProps().materials();
+    const label n = materials.size();
 
     if (!coeffs.isDict("walls"))
     {
@@ -238,29 +293,17 @@ void Foam::RaseraTriboCharging<CloudType>::read(const bool fromWorkFunctions)
                 fromWorkFunctions
               ? triboCharging::GammaFromWorkFunctions(phi[m], phiWall, deltaE)
               : getOwn(own, d, "Gamma", false);
-            checkGamma(Gamma, own ? *own : d, " of wall patch " + name);
+            checkGamma
+            (
+                Gamma, own ? *own : d, " of wall patch " + name,
+                fromWorkFunctions
+            );
             walls_.set(n*patchi + m, new triboCharging(kappaC, Gamma));
 
             Info<< "    tribocharging on wall patch " << name
                 << (n > 1 ? ", " + materials.name(m) : std::string()).c_str()
                 << ": kappa_c = " << kappaC << ", Gamma = " << Gamma
                 << " V/m" << endl;
-        }
-    }
-    for (label a = 0; a < n; ++a)
-    {
-        for (label b = a; b < n; ++b)
-        {
-            const triboCharging& law = pairLaw(a, b);
-            Info<< "    tribocharging particle-particle"
-                << (
-                       n > 1
-                     ? " " + materials.name(a) + "-" + materials.name(b)
-                     : std::string()
-                   ).c_str()
-                << ": kappa_c = " << law.kappaC() << ", Gamma = "
-                << law.Gamma() << " V/m"
-                << (a == b ? " (like particles)" : "") << endl;
         }
     }
 }
@@ -462,22 +505,13 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::RaseraTriboCharging<CloudType>::transfer
+void Foam::RaseraTriboCharging<CloudType>::findTransfers
 (
     const UList<ParcelContact<parcelType>>& contacts,
-    const labelUList& neighbours
+    List<DynamicList<labelPair>>& sentIds,
+    List<DynamicList<scalar>>& sentDq
 )
 {
-    // All transfers from the charges before this collide, then applied.
-    // A pair across processors is seen on both: only the side of the
-    // lower (origProc, origId) transfers, and sends the partner's share to
-    // the processor that referred the partner (a copy across a cyclic on
-    // this processor: to itself), so the processors balance to the last
-    // bit (the two sides' contact geometries differ at round-off). Both
-    // sides still update their area records
-    dq_.setSize(contacts.size());
-    List<DynamicList<labelPair>> sentIds(Pstream::nProcs());
-    List<DynamicList<scalar>> sentDq(Pstream::nProcs());
     forAll(contacts, k)
     {
         const ParcelContact<parcelType>& c = contacts[k];
@@ -517,6 +551,27 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
             }
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::transfer
+(
+    const UList<ParcelContact<parcelType>>& contacts,
+    const labelUList& neighbours
+)
+{
+    // All transfers from the charges before this collide, then applied.
+    // A pair across processors is seen on both: only the side of the
+    // lower (origProc, origId) transfers, and sends the partner's share to
+    // the processor that referred the partner (a copy across a cyclic on
+    // this processor: to itself), so the processors balance to the last
+    // bit (the two sides' contact geometries differ at round-off). Both
+    // sides still update their area records
+    dq_.setSize(contacts.size());
+    List<DynamicList<labelPair>> sentIds(Pstream::nProcs());
+    List<DynamicList<scalar>> sentDq(Pstream::nProcs());
+    findTransfers(contacts, sentIds, sentDq);
 
     forAll(contacts, k)
     {
