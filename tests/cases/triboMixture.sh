@@ -65,7 +65,7 @@ $PY - "$top" <<'PYEOF'
 import glob, math, sys
 import numpy as np
 sys.path.insert(0, sys.argv[1] + "/tutorials/headOnCollision")
-from headOnCollision import gamma_for
+from headOnCollision import gamma_for, impact
 
 d = np.vstack([np.loadtxt(f, ndmin=2) for f in
                sorted(glob.glob("postProcessing/lagrangian/cloud/particleHistory/*/particleHistory.dat"))])
@@ -84,25 +84,9 @@ k = 4/3*Estar*math.sqrt(Rstar)
 delta0 = (mstar*v0**2/k)**0.4
 t0 = delta0/v0
 
-# The dimensionless impact x'' = -(x^3/2 + sqrt(5)|beta| x^1/4 x') (the
-# test's own RK4): restitution, duration and the largest overlap
-gamma = gamma_for(0.7)
-x, v, t, h, xmax = 0.0, 1.0, 0.0, 1e-5, 0.0
-while True:
-    def acc(x, v):
-        xp = max(x, 0.0)
-        return -max(xp**1.5 + gamma*xp**0.25*v, 0.0)
-    k1x, k1v = v, acc(x, v)
-    k2x, k2v = v + 0.5*h*k1v, acc(x + 0.5*h*k1x, v + 0.5*h*k1v)
-    k3x, k3v = v + 0.5*h*k2v, acc(x + 0.5*h*k2x, v + 0.5*h*k2v)
-    k4x, k4v = v + h*k3v, acc(x + h*k3x, v + h*k3v)
-    xn = x + h/6*(k1x + 2*k2x + 2*k3x + k4x)
-    v = v + h/6*(k1v + 2*k2v + 2*k3v + k4v)
-    if xn <= 0:
-        T = t + h*x/(x - xn)
-        break
-    x, t = xn, t + h
-    xmax = max(xmax, x)
+# The dimensionless impact x'' = -(x^3/2 + sqrt(5)|beta| x^1/4 x')
+# (headOnCollision.py's RK4): restitution, duration, largest overlap
+_, T, xmax = impact(gamma_for(0.7), 1e-5)
 
 vEnd = abs(a[-1, 6] - b[-1, 6])
 eMeas = vEnd/v0

@@ -27,11 +27,11 @@ import numpy as np
 
 
 def impact(gamma, h=1e-4):
-    """Dimensionless impact: (restitution, duration of x > 0)."""
+    """Dimensionless impact: (restitution, duration of x > 0, largest x)."""
     def acc(x, v):
         xp = max(x, 0.0)
         return -max(xp**1.5 + gamma*xp**0.25*v, 0.0)
-    x, v, t = 0.0, 1.0, 0.0
+    x, v, t, xmax = 0.0, 1.0, 0.0, 0.0
     while True:
         k1x, k1v = v, acc(x, v)
         k2x, k2v = v + 0.5*h*k1v, acc(x + 0.5*h*k1x, v + 0.5*h*k1v)
@@ -40,8 +40,9 @@ def impact(gamma, h=1e-4):
         xn = x + h/6*(k1x + 2*k2x + 2*k3x + k4x)
         vn = v + h/6*(k1v + 2*k2v + 2*k3v + k4v)
         if xn <= 0:
-            return -vn, t + h*x/(x - xn)
+            return -vn, t + h*x/(x - xn), xmax
         x, v, t = xn, vn, t + h
+        xmax = max(xmax, x)
 
 
 def gamma_for(e):
@@ -144,7 +145,7 @@ def main():
     resolved = i1 - i0 >= 50
 
     gamma = gamma_for(args.e)
-    e_th, T = impact(gamma)
+    e_th, T, _ = impact(gamma)
     T0 = 2*(5/4)**0.4*0.4*math.gamma(0.4)*math.gamma(0.5)/math.gamma(0.9)
     duration_th = T*t0
 

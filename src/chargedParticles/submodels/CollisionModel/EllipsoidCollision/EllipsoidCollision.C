@@ -238,19 +238,14 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     const scalar mu = coeffs.get<scalar>("mu");
     const scalar muR =
         coeffs.template lookupOrDefault<scalar>("rollingFriction", 0);
-    boolList swapped;
-    const List<const dictionary*> pairs
-    (
-        materials.pairEntries(coeffs, swapped)
-    );
     pp_.setSize(n*n);
-    for (label a = 0; a < n; ++a)
-    {
-        for (label b = 0; b < n; ++b)
+    materials.forPairs
+    (
+        coeffs,
+        [&](const label a, const label b, const dictionary* entry, bool)
         {
-            const label ab = materials.pairIndex(a, b);
-            const dictionary& d = pairs[ab] ? *pairs[ab] : coeffs;
-            pp_[ab] = makeLaw
+            const dictionary& d = entry ? *entry : coeffs;
+            pp_[materials.pairIndex(a, b)] = makeLaw
             (
                 particleE_[a], particleNu_[a], particleE_[b], particleNu_[b],
                 d.template lookupOrDefault<scalar>("e", e),
@@ -259,7 +254,7 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
                 d
             );
         }
-    }
+    );
 
     // The walls: walls/<material> overrides e, mu and rollingFriction
     const dictionary& walls = coeffs.subDict("walls");

@@ -153,18 +153,18 @@ void Foam::RaseraTriboCharging<CloudType>::readPairLaws
 
     // Particle pairs: like materials Gamma = 0 (Rasera Eq. 18), unlike
     // from the work functions (Eqs. 14-15) or given per pair
-    boolList swapped;
-    const List<const dictionary*> pairs
-    (
-        materials.pairEntries(coeffs, swapped)
-    );
     pp_.setSize(n*n);
-    for (label a = 0; a < n; ++a)
-    {
-        for (label b = 0; b < n; ++b)
+    materials.forPairs
+    (
+        coeffs,
+        [&]
+        (
+            const label a,
+            const label b,
+            const dictionary* d,
+            const bool swapped
+        )
         {
-            const label ab = materials.pairIndex(a, b);
-            const dictionary* d = pairs[ab];
             const scalar kappaC =
                 d && d->found("kappaC") ? get(*d, "kappaC", true)
               : a == b ? kappaLike[a]
@@ -207,14 +207,18 @@ void Foam::RaseraTriboCharging<CloudType>::readPairLaws
                 }
                 Gamma = get(*d, "Gamma", false);
                 checkGamma(Gamma, *d, "", fromWorkFunctions);
-                if (swapped[ab])
+                if (swapped)
                 {
                     Gamma = -Gamma;
                 }
             }
-            pp_.set(ab, new triboCharging(kappaC, Gamma));
+            pp_.set
+            (
+                materials.pairIndex(a, b),
+                new triboCharging(kappaC, Gamma)
+            );
         }
-    }
+    );
 
     for (label a = 0; a < n; ++a)
     {
