@@ -9,8 +9,8 @@
 #     the opposite;
 #  2. a pour of 25 PTFE and 25 nylon ellipsoids into a grounded steel box
 #     charges bipolar (PTFE negative, nylon positive), each material's
-#     charge is written and the particles + walls keep the charge to
-#     round-off; a restart continues exactly, 2 processors reproduce the
+#     charge changes by what it got from the walls and from particles, and
+#     the particles + walls keep the charge to round-off; a restart continues exactly, 2 processors reproduce the
 #     serial run;
 #  3. OpenFOAM's manualInjection with a material (and an injectorID): its
 #     parcels are of that material and density, with a mass basis they
@@ -186,6 +186,18 @@ print(f"{'PASS' if ok else 'FAIL'}: triboMixture.{name}.balance (particles + wal
 err = np.abs(qP + qN - q).max()/np.abs(q).max()
 ok = err < 1e-12
 print(f"{'PASS' if ok else 'FAIL'}: triboMixture.{name}.materialSum (PTFE + nylon columns = parcels to {err:.1e})")
+# Each material's balance: its charge changes by what it received from the
+# walls and from particles; the particles' parts add up to zero
+scaleM = np.abs(qP).max() + np.abs(qN).max()
+errM = max(np.abs(d[:, col[f"parcels:{m}"]] - d[0, col[f"parcels:{m}"]]
+                  - d[:, col[f"fromWalls:{m}"]] - d[:, col[f"fromParticles:{m}"]]).max()
+           for m in ("PTFE", "nylon"))/scaleM
+pairSum = np.abs(d[:, col["fromParticles:PTFE"]] + d[:, col["fromParticles:nylon"]]).max()/scaleM
+fromP = d[-1, col["fromParticles:PTFE"]]
+ok = errM < 1e-12 and pairSum < 1e-12 and fromP < 0
+print(f"{'PASS' if ok else 'FAIL'}: triboMixture.{name}.materialBalance (each material's charge = "
+      f"from walls + from particles to {errM:.1e}; particles' parts add up to {pairSum:.1e}; "
+      f"PTFE got {fromP:.3e} C from nylon, {d[-1, col['fromWalls:PTFE']]:.3e} C from the walls)")
 ok = qP[-1] < 0 < qN[-1]
 print(f"{'PASS' if ok else 'FAIL'}: triboMixture.{name}.bipolar (PTFE {qP[-1]:.3e} C < 0 < nylon {qN[-1]:.3e} C; walls {wall[-1]:.3e} C)")
 PYEOF
@@ -200,6 +212,20 @@ setEndTime 0.08
 run solver2 chargedParticleFoam || fail "triboMixture.secondHalf (solver failed)"
 $PY "$tools/compareClouds.py" "$work/serial/0.08" "$work/restarted/0.08" \
     --tol 1e-12 --name triboMixture.restart
+$PY - "$work" <<'PYEOF'
+import sys
+import numpy as np
+w = sys.argv[1]
+def last(f):
+    head = [l for l in open(f) if l.startswith("# time")][0].split()[1:]
+    return dict(zip(head, np.loadtxt(f)[-1]))
+a = last(w + "/serial/postProcessing/lagrangian/cloud/triboCharging/0/chargeBalance.dat")
+b = last(w + "/restarted/postProcessing/lagrangian/cloud/triboCharging/0.04/chargeBalance.dat")
+keys = [k for k in a if k.startswith(("fromWalls:", "fromParticles:"))]
+err = max(abs(a[k] - b[k]) for k in keys)/max(abs(a[k]) for k in keys)
+print(f"{'PASS' if err < 1e-12 else 'FAIL'}: triboMixture.restartMaterialBooks (each material's charge from walls "
+      f"and particles at 0.08 s, serial and restarted: {err:.1e} apart)")
+PYEOF
 check triboMixture.restartMaterials "(material read back: the materials of the restarted cloud)" \
     cmp -s "$work/serial/0.08/lagrangian/cloud/material" "$work/restarted/0.08/lagrangian/cloud/material"
 

@@ -433,6 +433,10 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     // Per patch that is not a processor patch: the same list everywhere
     wallCharge0_(owner.mesh().boundaryMesh().nNonProcessor(), Zero),
     wallChargeLocal_(owner.mesh().boundaryMesh().nNonProcessor(), Zero),
+    fromWalls0_(nMaterials_ > 1 ? nMaterials_ : 0, Zero),
+    fromWallsLocal_(fromWalls0_.size(), Zero),
+    fromParticles0_(fromWalls0_.size(), Zero),
+    fromParticlesLocal_(fromWalls0_.size(), Zero),
     nPairCharging_(0),
     nWallCharging_(0),
     nPairImpacts_(0),
@@ -467,6 +471,17 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     {
         wallCharge0_[patchi] = patchi < q0.size() ? q0[patchi] : 0;
     }
+    scalarField fromWalls, fromParticles;
+    this->getModelProperty("materialChargeFromWalls", fromWalls);
+    this->getModelProperty("materialChargeFromParticles", fromParticles);
+    if (fromWalls.size() == fromWalls0_.size())
+    {
+        fromWalls0_ = fromWalls;
+    }
+    if (fromParticles.size() == fromParticles0_.size())
+    {
+        fromParticles0_ = fromParticles;
+    }
 }
 
 
@@ -493,6 +508,10 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     walls_(tm.walls_),
     wallCharge0_(tm.wallCharge0_),
     wallChargeLocal_(tm.wallChargeLocal_),
+    fromWalls0_(tm.fromWalls0_),
+    fromWallsLocal_(tm.fromWallsLocal_),
+    fromParticles0_(tm.fromParticles0_),
+    fromParticlesLocal_(tm.fromParticlesLocal_),
     nPairCharging_(tm.nPairCharging_),
     nWallCharging_(tm.nWallCharging_),
     nPairImpacts_(tm.nPairImpacts_),
@@ -585,18 +604,31 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
             continue;
         }
         c.pA->q() += dq_[k];
+        const bool books = nMaterials_ > 1;
         if (c.pB)
         {
             ++nPairCharging_;
+            if (books)
+            {
+                fromParticlesLocal_[c.pA->material()] += dq_[k];
+            }
             if (!c.referred)
             {
                 c.pB->q() -= dq_[k];
+                if (books)
+                {
+                    fromParticlesLocal_[c.pB->material()] -= dq_[k];
+                }
             }
         }
         else
         {
             ++nWallCharging_;
             wallChargeLocal_[c.patchi] -= dq_[k];
+            if (books)
+            {
+                fromWallsLocal_[c.pA->material()] += dq_[k];
+            }
         }
     }
 
@@ -648,6 +680,10 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
             if (iter.found())
             {
                 p.q() -= iter.val();
+                if (nMaterials_ > 1)
+                {
+                    fromParticlesLocal_[p.material()] -= iter.val();
+                }
             }
         }
     }
@@ -745,6 +781,14 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
         }
         Pstream::listCombineGather(qMaterials, plusEqOp<scalar>());
     }
+    scalarField fromWalls(fromWallsLocal_);
+    scalarField fromParticles(fromParticlesLocal_);
+    Pstream::listCombineGather(fromWalls, plusEqOp<scalar>());
+    Pstream::listCombineGather(fromParticles, plusEqOp<scalar>());
+    Pstream::listCombineScatter(fromWalls);
+    Pstream::listCombineScatter(fromParticles);
+    fromWalls += fromWalls0_;
+    fromParticles += fromParticles0_;
     const scalar qOut = sum(this->owner().escapedCharge());
     const label nPair = returnReduce(nPairCharging_, sumOp<label>());
     const label nWall = returnReduce(nWallCharging_, sumOp<label>());
@@ -764,6 +808,15 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
     if (time.writeTime())
     {
         this->setModelProperty("wallCharge", qWalls);
+        if (nMaterials_ > 1)
+        {
+            this->setModelProperty("materialChargeFromWalls", fromWalls);
+            this->setModelProperty
+            (
+                "materialChargeFromParticles",
+                fromParticles
+            );
+        }
     }
 
     if (!Pstream::master())
@@ -800,6 +853,14 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
         {
             os  << " parcels:" << materials.name(m);
         }
+        forAll(qMaterials, m)
+        {
+            os  << " fromWalls:" << materials.name(m);
+        }
+        forAll(qMaterials, m)
+        {
+            os  << " fromParticles:" << materials.name(m);
+        }
         os  << nl;
     }
 
@@ -820,6 +881,14 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
     forAll(qMaterials, m)
     {
         os  << ' ' << qMaterials[m];
+    }
+    forAll(qMaterials, m)
+    {
+        os  << ' ' << fromWalls[m];
+    }
+    forAll(qMaterials, m)
+    {
+        os  << ' ' << fromParticles[m];
     }
     os  << endl;
 }
