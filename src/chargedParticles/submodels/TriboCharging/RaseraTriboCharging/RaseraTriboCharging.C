@@ -783,12 +783,16 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
     }
     scalarField fromWalls(fromWallsLocal_);
     scalarField fromParticles(fromParticlesLocal_);
-    Pstream::listCombineGather(fromWalls, plusEqOp<scalar>());
-    Pstream::listCombineGather(fromParticles, plusEqOp<scalar>());
-    Pstream::listCombineScatter(fromWalls);
-    Pstream::listCombineScatter(fromParticles);
-    fromWalls += fromWalls0_;
-    fromParticles += fromParticles0_;
+    if (nMaterials_ > 1)
+    {
+        // Collective: one material has no books and no messages
+        Pstream::listCombineGather(fromWalls, plusEqOp<scalar>());
+        Pstream::listCombineGather(fromParticles, plusEqOp<scalar>());
+        Pstream::listCombineScatter(fromWalls);
+        Pstream::listCombineScatter(fromParticles);
+        fromWalls += fromWalls0_;
+        fromParticles += fromParticles0_;
+    }
     const scalar qOut = sum(this->owner().escapedCharge());
     const label nPair = returnReduce(nPairCharging_, sumOp<label>());
     const label nWall = returnReduce(nWallCharging_, sumOp<label>());
