@@ -147,6 +147,12 @@ badCase numericFastErfc 'electrostaticsModel directCoulomb;' \
 badCase negativePseudoParticleNe 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel periodic; periodicCoeffs { method pseudoParticle; Ne -1; }' \
     "Entry 'Ne' = -1 is out of range \[0, 1000\]"
+badCase negativePotentialInterval 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel periodic; periodicCoeffs { method p3m; potentialInterval -1; }' \
+    'Entry potentialInterval = -1 is out of range \[0, inf\)'
+badCase potentialsOfPseudoParticle 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel periodic; periodicCoeffs { method pseudoParticle; potentialInterval 5; }' \
+    'Entry potentialInterval = 5: method pseudoParticle gives no potentials'
 
 # BEM solver controls (read as in the bemElectrostatics utility)
 badCase negativePreconditionerPatches 'epsilonR +1;' \

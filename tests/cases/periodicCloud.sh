@@ -3,7 +3,9 @@
 # The written forces fE of the p3m (default) and ewald kernels equal an
 # independent Ewald sum written here in numpy (tinfoil, neutralising
 # background); the 2-, 4- and 8-processor runs (p3m: a halo and a mesh
-# distributed in slabs, nothing gathered) give the serial forces.
+# distributed in slabs, nothing gathered) give the serial forces. The
+# p3m runs log the potentials' mean and variance (potentialInterval 1):
+# those of the numpy Ewald potentials, in serial and in parallel.
 . "$(dirname "$0")/common.sh.inc"
 
 copyCase twoChargedSpheres "$work/p3m"
@@ -33,6 +35,11 @@ cp -r "$work/p3m" "$work/parallel"
 cp -r "$work/p3m" "$work/parallel4"
 cp -r "$work/p3m" "$work/parallel8"
 sed -i 's/method p3m; accuracy 1e-7;/method ewald;/' "$work/ewald/constant/cloudProperties"
+for c in p3m parallel parallel4 parallel8
+do
+    sed -i 's/method p3m; accuracy 1e-7;/method p3m; accuracy 1e-7; potentialInterval 1;/' \
+        "$work/$c/constant/cloudProperties"
+done
 for c in p3m ewald
 do
     cd "$work/$c" || exit 1
@@ -138,6 +145,8 @@ x0 = np.loadtxt(work + "/p3m/positions.txt")
 q = np.full(len(x0), 1e-9)
 alpha = 6.0/L
 F = np.zeros_like(x0)
+# Potentials: self term and the background's -pi Q/(V alpha^2)
+phi = np.full(len(x0), -2*alpha/math.sqrt(math.pi)*q[0] - math.pi*q.sum()/(L**3*alpha**2))
 rng = range(-3, 4)
 for i in range(len(x0)):
     d = x0[i] - x0
@@ -146,8 +155,10 @@ for i in range(len(x0)):
         rr = np.linalg.norm(r, axis=1)
         m = rr > 0
         rr, rv = rr[m], r[m]
-        g = np.array([math.erfc(alpha*v) for v in rr])/rr**2 + 2*alpha/math.sqrt(math.pi)*np.exp(-(alpha*rr)**2)/rr
+        erfc = np.array([math.erfc(alpha*v) for v in rr])
+        g = erfc/rr**2 + 2*alpha/math.sqrt(math.pi)*np.exp(-(alpha*rr)**2)/rr
         F[i] += k*q[i]*np.sum((q[m]*g/rr)[:, None]*rv, axis=0)
+        phi[i] += np.sum(q[m]*erfc/rr)
 kmax = 12
 for a in range(-kmax, kmax + 1):
     for b in range(-kmax, kmax + 1):
@@ -160,6 +171,10 @@ for a in range(-kmax, kmax + 1):
             ph = x0 @ kv
             S_c, S_s = np.sum(q*np.cos(ph)), np.sum(q*np.sin(ph))
             F += (k*w*q*(np.sin(ph)*S_c - np.cos(ph)*S_s))[:, None]*kv
+            phi += w*(np.cos(ph)*S_c + np.sin(ph)*S_s)
+phi *= k
+phiMean, phiVar = phi.mean(), phi.var()
+phiScale = k*q[0]*len(x0)**(1/3)/L
 
 scale = np.sqrt(np.mean(np.sum(F**2, axis=1)))
 ok_all = True
@@ -178,6 +193,23 @@ for name in ("p3m", "ewald", "parallel", "parallel4", "parallel8"):
     ok = len(set(idx)) == len(x0) and err < tol
     print(f"{'PASS' if ok else 'FAIL'}: periodicCloud.{name} (rms force error vs an independent "
           f"Ewald sum {err:.1e} of the rms force, tol {tol:g}; {len(x)} parcels)")
+    if name != "ewald":
+        # The logged potential statistics against numpy's (scale: a charge
+        # at the mean spacing)
+        import re
+        m = re.search(r"<phi>_p = (\S+) V, <phi'\^2>_p = (\S+) V2", open(f"{work}/{name}/log.solver").read())
+        dm = abs(float(m.group(1)) - phiMean)/phiScale if m else float("inf")
+        dv = abs(float(m.group(2)) - phiVar)/phiScale**2 if m else float("inf")
+        ok = dm < 1e-6 and dv < 1e-6
+        print(f"{'PASS' if ok else 'FAIL'}: periodicCloud.{name}.potentials (<phi>_p and <phi'^2>_p "
+              f"vs the numpy Ewald potentials: {dm:.1e}, {dv:.1e} of k q n^(1/3) and its square, tol 1e-6)")
+        if name == "p3m":
+            phiSerial = (float(m.group(1)), float(m.group(2)))
+        else:
+            rel = max(abs(float(m.group(1)) - phiSerial[0])/phiScale,
+                      abs(float(m.group(2)) - phiSerial[1])/phiScale**2)
+            print(f"{'PASS' if rel < 1e-12 else 'FAIL'}: periodicCloud.{name}.potentials.serial (the "
+                  f"potentials' statistics as in serial to {rel:.1e}, tol 1e-12)")
     if name == "p3m":
         serial = dict(zip(map(int, idx), f))
     elif name.startswith("parallel"):

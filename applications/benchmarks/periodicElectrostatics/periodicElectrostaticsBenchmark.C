@@ -34,6 +34,9 @@ Usage
     periodicElectrostaticsBenchmark [-quick] [-N '(1000 10000)']
         [-accuracy 1e-4] [-noLammps] [-runs DIR] [-seed S]
         [-maxDirect 100000] [-maxPseudo 1000000]
+    periodicElectrostaticsBenchmark -N '(100)' -layers 8
+        (Boutsikakis Figs. 6-7: the quasi-periodic sum's energy and forces
+        against the number of periodic layers)
 
 \*---------------------------------------------------------------------------*/
 
@@ -311,6 +314,67 @@ void sweepCutoffs(const settings& s, const label N, const scalarList& rcs)
             p.rCut, p.alpha, int(p.mesh[0]), p.error/p.target, tr, tk,
             tt);
     }
+}
+
+
+//- Boutsikakis 2023 Figs. 6-7 at N charges: the quasi-periodic direct sum
+//  for Nper = 1 .. NperMax: the mean particle energy <u_e> = <q phi> (Eq.
+//  12) over the uniformly charged cube's limit k rho a^2 C Q, a = (2 Nper -
+//  1) L, C = 3 ln(2 + sqrt 3) - pi/2 (the potential at a unit cube's
+//  centre, rho of the N - 1 others); <|F|>; the per-particle error against
+//  Nper = NperMax (Fig. 7's bins), against Ewald, and with the
+//  minimum-image dipole term removed against Ewald (its limit)
+void layers(const settings& s, const label N, const label NperMax)
+{
+    const vector& L = s.L;
+    Random rnd(s.seed);
+    pointField x;
+    scalarField q;
+    makeCloud(N, rnd, L, s.Q, x, q);
+    List<vector> fEwald, fMax;
+    ewaldSum(L).compute(x, q, fEwald);
+    quasiPeriodicDirect(L, 1, NperMax).compute(x, q, fMax);
+    const scalar V = L.x()*L.y()*L.z();
+    const scalar cubeCentre =
+        3*Foam::log(2 + Foam::sqrt(3.0)) - constant::mathematical::pi/2;
+    const scalar kc = ewaldSum(L).k();
+
+    std::printf("### Periodic layers (Boutsikakis Figs. 6-7), Np = %d\n\n",
+        int(N));
+    std::printf("| Nper | <u_e> [J] | <u_e>/cube limit | <abs F> [N] |"
+        " vs Nper = %d: rms rel. | median | bins 0-1/1-5/5-10/10-20/20-50/>50 %%"
+        " | vs Ewald: rms rel. | median | minus dipole vs Ewald: rms rel."
+        " | median | time [s] |\n", int(NperMax));
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (label Nper = 1; Nper <= NperMax; ++Nper)
+    {
+        const quasiPeriodicDirect direct(L, 1, Nper);
+        List<vector> f;
+        scalarField phi;
+        const double t = timeIt([&](){ direct.compute(x, q, f); });
+        direct.potentials(x, q, phi);
+        const scalar ue = average(q*phi);
+        const scalar a = (2*Nper - 1)*cmptAv(L);
+        const scalar limit = kc*(N - 1)*s.Q/V*a*a*cubeCentre*s.Q;
+        scalar meanF = 0;
+        for (const vector& v : f) meanF += mag(v);
+        meanF /= N;
+        const periodicForceError eMax(f, fMax), eEw(f, fEwald);
+        List<vector> fc(f);
+        direct.addMinImageDipole(x, q, fc, -1);
+        const periodicForceError eDip(fc, fEwald);
+        std::printf("| %d | %.5g | %.5f | %.5g | %.3g | %.3g |", int(Nper),
+            ue, ue/limit, meanF, eMax.rmsAbs/eMax.rmsRef, eMax.median);
+        for (label b = 0; b < 6; ++b)
+        {
+            std::printf("%s%.0f", b ? "/" : " ", 100*eMax.bins[b]);
+        }
+        std::printf(" | %.3g | %.3g | %.3g | %.3g | %.3g |\n",
+            eEw.rmsAbs/eEw.rmsRef, eEw.median, eDip.rmsAbs/eDip.rmsRef,
+            eDip.median, t);
+        std::fflush(stdout);
+    }
+    std::printf("\n");
 }
 
 
@@ -690,6 +754,12 @@ int main(int argc, char *argv[])
         "p3m only: time and estimated error for these rCut [m] at the first"
         " Np (check of the cost model of the automatic choice)"
     );
+    argList::addOption
+    (
+        "layers", "NperMax",
+        "only Boutsikakis Figs. 6-7: the direct sum for Nper = 1 .. NperMax"
+        " at the first Np (energy, <|F|>, errors vs NperMax and Ewald)"
+    );
     argList args(argc, argv);
 
     const bool quick = args.found("quick");
@@ -726,6 +796,11 @@ int main(int argc, char *argv[])
             std::getline(f, s); return s; }().c_str());
 
     const settings s{accuracy, seed, maxDirect, maxPseudo, runs, lmp, L, Q};
+    if (args.found("layers"))
+    {
+        layers(s, Ns[0], args.get<label>("layers"));
+        return 0;
+    }
     if (args.found("sweep"))
     {
         sweepCutoffs(s, Ns[0], args.get<scalarList>("sweep"));

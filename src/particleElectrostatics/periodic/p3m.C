@@ -310,22 +310,20 @@ std::vector<std::array<label, 3>> halfStencil(const label reach)
 }
 
 
-// The pair forces within rc2 of the sorted charges c, by cells of the
-// periodic box L and the stencil of reach cells, added to (fx, fy, fz) in
-// sorted order. Candidates within rc are first compacted without branches
-// (the accept test is unpredictable: about 27 % pass), then their forces
-// computed in a second, predictable loop
-template<class Force>
-void cellPairForces
+// Visits the pairs within rc2 of the sorted charges c, by cells of the
+// periodic box L and the stencil of reach cells: v.begin(s), v.pair(s, t,
+// dx, dy, dz, r2) for each partner t of s (indices in sorted order, each
+// pair once), v.end(s). Candidates within rc are first compacted without
+// branches (the accept test is unpredictable: about 27 % pass), then
+// visited in a second, predictable loop
+template<class Visitor>
+void cellPairs
 (
     const cellSortedCharges& c,
     const Foam::vector& L,
     const label reach,
     const scalar rc2,
-    const Force& pairForce,
-    std::vector<scalar>& fx,
-    std::vector<scalar>& fy,
-    std::vector<scalar>& fz
+    Visitor& v
 )
 {
     const label* nc = c.nc;
@@ -334,7 +332,6 @@ void cellPairForces
     const std::vector<scalar>& xs = c.xs;
     const std::vector<scalar>& ys = c.ys;
     const std::vector<scalar>& zs = c.zs;
-    const std::vector<scalar>& qs = c.qs;
     const label nCells = nc[0]*nc[1]*nc[2];
     const std::vector<std::array<label, 3>> stencil(halfStencil(reach));
     label maxCell = 0;
@@ -378,7 +375,7 @@ void cellPairForces
 
         for (label s = s0; s < s1; ++s)
         {
-            const scalar xi = xs[s], yi = ys[s], zi = zs[s], qi = qs[s];
+            const scalar xi = xs[s], yi = ys[s], zi = zs[s];
             const label keptI = kept[s];
             label m = 0;
             for (label t = s + 1; t < s1; ++t)
@@ -404,24 +401,149 @@ void cellPairForces
                 }
             }
 
-            scalar fxi = 0, fyi = 0, fzi = 0;
+            v.begin(s);
             for (label j = 0; j < m; ++j)
             {
-                const scalar r2 = br[j];
-                if (r2 == 0)
+                if (br[j] == 0)
                 {
                     FatalErrorInFunction
                         << "Charges " << c.order[s] << " and " << c.order[bt[j]]
                         << " coincide (modulo the box)"
                         << Foam::exit(Foam::FatalError);
                 }
-                const label t = bt[j];
-                const scalar g = qi*qs[t]*pairForce(r2);
-                const scalar gx = g*bx[j], gy = g*by[j], gz = g*bz[j];
-                fxi += gx; fyi += gy; fzi += gz;
-                fx[t] -= gx; fy[t] -= gy; fz[t] -= gz;
+                v.pair(s, bt[j], bx[j], by[j], bz[j], br[j]);
             }
-            fx[s] += fxi; fy[s] += fyi; fz[s] += fzi;
+            v.end(s);
+        }
+    }
+}
+
+
+// Pair visitor of the real-space forces q_i q_j g(r^2) r (Newton's third
+// law), in the visiting order; finish adds them to f in the charges' order
+template<class Force>
+class realSpaceForceSum
+{
+    const scalar* q_;
+    const Force& pairForce_;
+    std::vector<scalar> fx_, fy_, fz_;
+    scalar fxi_, fyi_, fzi_;
+
+public:
+
+    explicit realSpaceForceSum(const Force& pairForce)
+    :
+        q_(nullptr), pairForce_(pairForce), fxi_(0), fyi_(0), fzi_(0)
+    {}
+
+    void start(const std::vector<scalar>& q)
+    {
+        q_ = q.data();
+        fx_.assign(q.size(), 0);
+        fy_.assign(q.size(), 0);
+        fz_.assign(q.size(), 0);
+    }
+
+    void begin(const label) { fxi_ = fyi_ = fzi_ = 0; }
+
+    void pair
+    (
+        const label s, const label t,
+        const scalar dx, const scalar dy, const scalar dz, const scalar r2
+    )
+    {
+        const scalar g = q_[s]*q_[t]*pairForce_(r2);
+        const scalar gx = g*dx, gy = g*dy, gz = g*dz;
+        fxi_ += gx; fyi_ += gy; fzi_ += gz;
+        fx_[t] -= gx; fy_[t] -= gy; fz_[t] -= gz;
+    }
+
+    void end(const label s) { fx_[s] += fxi_; fy_[s] += fyi_; fz_[s] += fzi_; }
+
+    void finish(const std::vector<label>& order, Foam::UList<Foam::vector>& f)
+    {
+        for (size_t s = 0; s < order.size(); ++s)
+        {
+            f[order[s]] += Foam::vector(fx_[s], fy_[s], fz_[s]);
+        }
+    }
+};
+
+
+// Pair visitor of the real-space potentials q_j erfc(a r)/r (std::erfc:
+// the potential is a diagnostic, not the hot path)
+class realSpacePotentialSum
+{
+    const scalar* q_;
+    const scalar a_;
+    std::vector<scalar> phi_;
+    scalar phii_;
+
+public:
+
+    explicit realSpacePotentialSum(const scalar alpha)
+    :
+        q_(nullptr), a_(alpha), phii_(0)
+    {}
+
+    void start(const std::vector<scalar>& q)
+    {
+        q_ = q.data();
+        phi_.assign(q.size(), 0);
+    }
+
+    void begin(const label) { phii_ = 0; }
+
+    void pair
+    (
+        const label s, const label t,
+        const scalar, const scalar, const scalar, const scalar r2
+    )
+    {
+        const scalar r = std::sqrt(r2);
+        const scalar e = std::erfc(a_*r)/r;
+        phii_ += q_[t]*e;
+        phi_[t] += q_[s]*e;
+    }
+
+    void end(const label s) { phi_[s] += phii_; }
+
+    void finish(const std::vector<label>& order, Foam::UList<scalar>& phi)
+    {
+        for (size_t s = 0; s < order.size(); ++s)
+        {
+            phi[order[s]] += phi_[s];
+        }
+    }
+};
+
+
+// What the processors whose slabs a charge's stencil touched computed for
+// it (values[proci][j] for the charge sent[proci][j]), sent back to its
+// owner, which calls add(i, value) for each
+template<class Type, class Add>
+void returnFromSlabs
+(
+    Foam::List<Foam::List<Type>>& values,
+    const Foam::List<Foam::DynamicList<label>>& sent,
+    const Add& add
+)
+{
+    Foam::labelList backSizes(sent.size());
+    forAll(sent, proci)
+    {
+        backSizes[proci] = sent[proci].size();
+    }
+    Foam::List<Foam::List<Type>> received;
+    Foam::Pstream::exchange<Foam::List<Type>, Type>
+    (
+        values, backSizes, received
+    );
+    forAll(received, proci)
+    {
+        forAll(sent[proci], j)
+        {
+            add(sent[proci][j], received[proci][j]);
         }
     }
 }
@@ -859,7 +981,7 @@ void Foam::p3m::allocateMesh(const bool distributed) const
 }
 
 
-void Foam::p3m::influenceFunction() const
+void Foam::p3m::influenceFunction(const bool withPotential) const
 {
     const label P = p_.order;
     const label n[3] = {p_.mesh[0], p_.mesh[1], p_.mesh[2]};
@@ -922,6 +1044,14 @@ void Foam::p3m::influenceFunction() const
     const label n2c = n[2]/2 + 1;
     const label i1Begin = local1_, i1End = local1_ + localN1_;
     G_.assign((i1End - i1Begin)*n[0]*n2c, 0);
+    if (withPotential)
+    {
+        Gphi_.assign(G_.size(), 0);
+    }
+    else
+    {
+        Gphi_.clear();
+    }
     kx_ = kd[0];
     ky_ = kd[1];
     kz_ = kd[2];
@@ -936,7 +1066,7 @@ void Foam::p3m::influenceFunction() const
                 const vector k(k1[0][i0], k1[1][i1], k1[2][i2]);
                 const scalar k2 = magSqr(k);
                 if (k2 == 0) continue;
-                scalar num = 0;
+                scalar num = 0, numPhi = 0;
                 for (label b0 = 0; b0 <= 2*nb[0]; ++b0)
                 {
                     const scalar u0 = U2a[0][i0][b0];
@@ -954,6 +1084,12 @@ void Foam::p3m::influenceFunction() const
                             num +=
                                 u01*U2a[2][i2][b2]*dot/kb2
                                *Foam::exp(-kb2*c4a2);
+                            if (withPotential)
+                            {
+                                numPhi +=
+                                    u01*U2a[2][i2][b2]/kb2
+                                   *Foam::exp(-kb2*c4a2);
+                            }
                         }
                     }
                 }
@@ -963,25 +1099,32 @@ void Foam::p3m::influenceFunction() const
                   ? ((i1 - i1Begin)*n[0] + i0)*n2c + i2
                   : (i0*n[1] + i1)*n2c + i2;
                 G_[c] = 4*pi*num/(k2*D*D)/V;
+                if (withPotential)
+                {
+                    // Optimal for the potential (Hockney & Eastwood
+                    // 8-22 with the potential's Green function)
+                    Gphi_[c] = 4*pi*numPhi/(D*D)/V;
+                }
             }
         }
     }
 }
 
 
-void Foam::p3m::realSpace
+template<class Visitor, class Result>
+void Foam::p3m::realSpacePairs
 (
     const UList<point>& xw,
     const UList<scalar>& q,
-    UList<vector>& f,
-    const label nOwn
+    const label nOwn,
+    Visitor& v,
+    UList<Result>& result
 ) const
 {
     const label N = xw.size();
     // Pairs of two copies (a halo's) give nothing this processor keeps
     const label nKept = nOwn < 0 ? N : nOwn;
     const scalar rc = p_.rCut, rc2 = rc*rc;
-    const realSpaceForce pairForce(p_.alpha, rc, p_.fastErfc, tab_);
 
     // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
     // vs 15 % for cells of rc), else rc, else all pairs
@@ -1000,9 +1143,17 @@ void Foam::p3m::realSpace
     if (nc[0] < 3 || nc[1] < 3 || nc[2] < 3)
     {
         // Few cells: all pairs, minimum image (rc <= L/2 is checked)
+        std::vector<label> order(N);
+        std::vector<scalar> qs(N);
         for (label i = 0; i < N; ++i)
         {
-            vector fi(Zero);
+            order[i] = i;
+            qs[i] = q[i];
+        }
+        v.start(qs);
+        for (label i = 0; i < N; ++i)
+        {
+            v.begin(i);
             for (label j = i + 1; j < N; ++j)
             {
                 const vector r = minImage(xw[i] - xw[j]);
@@ -1014,23 +1165,33 @@ void Foam::p3m::realSpace
                         << "Charges " << i << " and " << j << " coincide"
                         << exit(FatalError);
                 }
-                const vector fij = (q[i]*q[j]*pairForce(r2))*r;
-                fi += fij;
-                f[j] -= fij;
+                v.pair(i, j, r.x(), r.y(), r.z(), r2);
             }
-            f[i] += fi;
+            v.end(i);
         }
+        v.finish(order, result);
         return;
     }
 
     // Cell list, charges sorted by cell
     const cellSortedCharges sorted(xw, q, nKept, L_, nc);
-    std::vector<scalar> fx(N, 0), fy(N, 0), fz(N, 0);
-    cellPairForces(sorted, L_, reach, rc2, pairForce, fx, fy, fz);
-    for (label s = 0; s < N; ++s)
-    {
-        f[sorted.order[s]] += vector(fx[s], fy[s], fz[s]);
-    }
+    v.start(sorted.qs);
+    cellPairs(sorted, L_, reach, rc2, v);
+    v.finish(sorted.order, result);
+}
+
+
+void Foam::p3m::realSpace
+(
+    const UList<point>& xw,
+    const UList<scalar>& q,
+    UList<vector>& f,
+    const label nOwn
+) const
+{
+    const realSpaceForce pairForce(p_.alpha, p_.rCut, p_.fastErfc, tab_);
+    realSpaceForceSum<realSpaceForce> forces(pairForce);
+    realSpacePairs(xw, q, nOwn, forces, f);
 }
 
 
@@ -1110,7 +1271,33 @@ void Foam::p3m::solveMesh() const
 }
 
 
-Foam::vector Foam::p3m::interpolate(const point& xw) const
+void Foam::p3m::solvePotentialMesh() const
+{
+    if (Gphi_.size() != G_.size())
+    {
+        influenceFunction(true);
+    }
+    fftw_execute(static_cast<fftw_plan>(planForward_));
+
+    // phi = backward FFT of Gphi rho^ into the first field mesh
+    fftw_complex* rh = static_cast<fftw_complex*>(rhoHat_);
+    fftw_complex* wk = static_cast<fftw_complex*>(work_);
+    for (size_t c = 0; c < Gphi_.size(); ++c)
+    {
+        wk[c][0] = Gphi_[c]*rh[c][0];
+        wk[c][1] = Gphi_[c]*rh[c][1];
+    }
+    fftw_execute(static_cast<fftw_plan>(planBackward_[0]));
+}
+
+
+template<int nMesh>
+void Foam::p3m::interpolateMeshes
+(
+    const point& xw,
+    const double* const* meshes,
+    scalar* values
+) const
 {
     const label P = p_.order;
     const label n1 = p_.mesh[1];
@@ -1122,7 +1309,7 @@ Foam::vector Foam::p3m::interpolate(const point& xw) const
     assignmentStencil(xw, P, hi, p_.mesh, idx, w);
 
     // The same weights as the assignment, on this processor's x-planes
-    scalar ex = 0, ey = 0, ez = 0;
+    for (int v = 0; v < nMesh; ++v) values[v] = 0;
     for (label a = 0; a < P; ++a)
     {
         const label i0 = idx[0][a] - local0_;
@@ -1135,13 +1322,29 @@ Foam::vector Foam::p3m::interpolate(const point& xw) const
             {
                 const scalar wabc = wab*w[2][c];
                 const label m = row + idx[2][c];
-                ex += wabc*Efield_[0][m];
-                ey += wabc*Efield_[1][m];
-                ez += wabc*Efield_[2][m];
+                for (int v = 0; v < nMesh; ++v)
+                {
+                    values[v] += wabc*meshes[v][m];
+                }
             }
         }
     }
-    return vector(ex, ey, ez);
+}
+
+
+Foam::vector Foam::p3m::interpolate(const point& xw) const
+{
+    vector E;
+    interpolateMeshes<3>(xw, Efield_, E.v_);
+    return E;
+}
+
+
+Foam::scalar Foam::p3m::interpolatePotential(const point& xw) const
+{
+    scalar phi;
+    interpolateMeshes<1>(xw, Efield_, &phi);
+    return phi;
 }
 
 
@@ -1161,11 +1364,12 @@ void Foam::p3m::kSpace
 }
 
 
-void Foam::p3m::kSpaceDistributed
+Foam::List<Foam::point> Foam::p3m::assignOnSlabs
 (
     const UList<point>& xw,
     const UList<scalar>& q,
-    UList<vector>& f
+    List<DynamicList<label>>& sent,
+    labelList& fromProc
 ) const
 {
     const label nProcs = Pstream::nProcs();
@@ -1176,7 +1380,7 @@ void Foam::p3m::kSpaceDistributed
     scalar w[3][7];
 
     // Each charge to the processors whose x-planes its stencil touches
-    List<DynamicList<label>> sent(nProcs);
+    sent.setSize(nProcs);
     forAll(xw, i)
     {
         assignmentStencil(xw[i], P, hi, p_.mesh, idx, w);
@@ -1207,8 +1411,8 @@ void Foam::p3m::kSpaceDistributed
     Pstream::exchange<List<point>, point>(sendX, recvSizes, recvX);
     Pstream::exchange<List<scalar>, scalar>(sendQ, recvSizes, recvQ);
 
-    // Assigned on this processor's slab, solved on the distributed mesh
-    const List<point> xr(ListListOps::combine<List<point>>
+    // Assigned on this processor's slab
+    List<point> xr(ListListOps::combine<List<point>>
     (
         recvX, accessOp<List<point>>()
     ));
@@ -1217,32 +1421,102 @@ void Foam::p3m::kSpaceDistributed
         xr,
         ListListOps::combine<List<scalar>>(recvQ, accessOp<List<scalar>>())
     );
+    fromProc.setSize(nProcs);
+    forAll(recvX, proci)
+    {
+        fromProc[proci] = recvX[proci].size();
+    }
+    return xr;
+}
+
+
+void Foam::p3m::kSpaceDistributed
+(
+    const UList<point>& xw,
+    const UList<scalar>& q,
+    UList<vector>& f
+) const
+{
+    List<DynamicList<label>> sent;
+    labelList fromProc;
+    const List<point> xr(assignOnSlabs(xw, q, sent, fromProc));
     solveMesh();
 
     // This slab's part of each received charge's field, sent back
-    List<List<vector>> sendE(nProcs), recvE;
+    List<List<vector>> sendE(fromProc.size());
     label k = 0;
-    forAll(recvX, proci)
+    forAll(sendE, proci)
     {
-        sendE[proci].setSize(recvX[proci].size());
+        sendE[proci].setSize(fromProc[proci]);
         for (vector& E : sendE[proci])
         {
             E = interpolate(xr[k++]);
         }
     }
-    labelList backSizes(nProcs);
-    forAll(sent, proci)
+    returnFromSlabs
+    (
+        sendE, sent,
+        [&](const label i, const vector& E) { f[i] += q[i]*E; }
+    );
+}
+
+
+void Foam::p3m::kSpacePotential
+(
+    const UList<point>& xw,
+    const UList<scalar>& q,
+    UList<scalar>& phi
+) const
+{
+    if (!distributed_)
     {
-        backSizes[proci] = sent[proci].size();
-    }
-    Pstream::exchange<List<vector>, vector>(sendE, backSizes, recvE);
-    forAll(recvE, proci)
-    {
-        forAll(sent[proci], j)
+        assign(xw, q);
+        solvePotentialMesh();
+        forAll(xw, i)
         {
-            const label i = sent[proci][j];
-            f[i] += q[i]*recvE[proci][j];
+            phi[i] += interpolatePotential(xw[i]);
         }
+        return;
+    }
+
+    List<DynamicList<label>> sent;
+    labelList fromProc;
+    const List<point> xr(assignOnSlabs(xw, q, sent, fromProc));
+    solvePotentialMesh();
+    List<List<scalar>> sendPhi(fromProc.size());
+    label k = 0;
+    forAll(sendPhi, proci)
+    {
+        sendPhi[proci].setSize(fromProc[proci]);
+        for (scalar& v : sendPhi[proci])
+        {
+            v = interpolatePotential(xr[k++]);
+        }
+    }
+    returnFromSlabs
+    (
+        sendPhi, sent,
+        [&](const label i, const scalar v) { phi[i] += v; }
+    );
+}
+
+
+void Foam::p3m::addPotentialConstants
+(
+    const UList<scalar>& q,
+    const scalar Qtotal,
+    UList<scalar>& phi
+) const
+{
+    // Ewald's self term -2 a q_i/sqrt(pi) (the mesh's potential includes
+    // the charge's own Gaussian) and the background's -pi Q/(V a^2)
+    // (d/dq_i of its energy -pi Q^2/(2 V a^2)); then k
+    const scalar a = p_.alpha;
+    const scalar V = L_.x()*L_.y()*L_.z();
+    const scalar background = -pi*Qtotal/(V*a*a);
+    forAll(phi, i)
+    {
+        phi[i] = k_*(phi[i] - 2*a/Foam::sqrt(pi)*q[i] + background);
     }
 }
 
@@ -1389,6 +1663,94 @@ void Foam::p3m::computeDistributed
     {
         f[i] *= k_;
     }
+}
+
+
+void Foam::p3m::potentials
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    scalarField& phi
+) const
+{
+    checkInput(x, q);
+    const label N = x.size();
+    phi.setSize(N);
+    phi = 0;
+    scalar Q2 = 0, Q = 0;
+    for (const scalar qi : q)
+    {
+        Q2 += qi*qi;
+        Q += qi;
+    }
+    if (N == 0 || Q2 == 0) return;
+
+    tune(N, Q2, false);
+    List<point> xw(N);
+    forAll(x, i)
+    {
+        xw[i] = wrap(x[i]);
+    }
+    realSpacePotentialSum pairs(p_.alpha);
+    realSpacePairs(xw, q, -1, pairs, phi);
+    kSpacePotential(xw, q, phi);
+    addPotentialConstants(q, Q, phi);
+}
+
+
+void Foam::p3m::potentialsDistributed
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const List<boundBox>& boxes,
+    scalarField& phi
+) const
+{
+    if (!Pstream::parRun())
+    {
+        potentials(x, q, phi);
+        return;
+    }
+
+    checkInput(x, q);
+    const label nLocal = x.size();
+    phi.setSize(nLocal);
+    phi = 0;
+    label N = nLocal;
+    scalar Q2 = 0, Q = 0;
+    for (const scalar qi : q)
+    {
+        Q2 += qi*qi;
+        Q += qi;
+    }
+    reduce(N, sumOp<label>());
+    reduce(Q2, sumOp<scalar>());
+    reduce(Q, sumOp<scalar>());
+    if (N == 0 || Q2 == 0) return;
+
+    tune(N, Q2, true);
+
+    // Real space: own charges and the halo within rCut, as the forces
+    const processorHalo halo
+    (
+        boxes, x, p_.rCut, processorHalo::boxTranslations(L_)
+    );
+    List<scalar> qh(q);
+    halo.gather(qh);
+    List<point> xh(halo.points());
+    forAll(xh, i)
+    {
+        xh[i] = wrap(xh[i]);
+    }
+    scalarField phih(xh.size(), 0);
+    realSpacePotentialSum pairs(p_.alpha);
+    realSpacePairs(xh, qh, nLocal, pairs, phih);
+    forAll(phi, i)
+    {
+        phi[i] = phih[i];
+    }
+    kSpacePotential(SubList<point>(xh, nLocal), q, phi);
+    addPotentialConstants(q, Q, phi);
 }
 
 

@@ -196,6 +196,33 @@ void Foam::periodicElectrostatics::checkInput
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::periodicElectrostatics::gatherAll
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    pointField& allX,
+    scalarField& allQ,
+    label& myStart
+)
+{
+    List<pointField> procX(Pstream::nProcs());
+    List<scalarField> procQ(Pstream::nProcs());
+    procX[Pstream::myProcNo()] = x;
+    procQ[Pstream::myProcNo()] = q;
+    Pstream::gatherList(procX);
+    Pstream::scatterList(procX);
+    Pstream::gatherList(procQ);
+    Pstream::scatterList(procQ);
+    myStart = 0;
+    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    {
+        myStart += procX[proci].size();
+    }
+    allX = ListListOps::combine<pointField>(procX, accessOp<pointField>());
+    allQ = ListListOps::combine<scalarField>(procQ, accessOp<scalarField>());
+}
+
+
 void Foam::periodicElectrostatics::computeDistributed
 (
     const UList<point>& x,
@@ -210,29 +237,50 @@ void Foam::periodicElectrostatics::computeDistributed
         return;
     }
 
-    // Every processor's charges on every processor, in processor order
-    List<pointField> allX(Pstream::nProcs());
-    List<scalarField> allQ(Pstream::nProcs());
-    allX[Pstream::myProcNo()] = x;
-    allQ[Pstream::myProcNo()] = q;
-    Pstream::gatherList(allX);
-    Pstream::scatterList(allX);
-    Pstream::gatherList(allQ);
-    Pstream::scatterList(allQ);
-    label myStart = 0;
-    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
+    pointField allX;
+    scalarField allQ;
+    label myStart;
+    gatherAll(x, q, allX, allQ, myStart);
+    List<vector> fAll;
+    compute(allX, allQ, fAll);
+    f = SubList<vector>(fAll, x.size(), myStart);
+}
+
+
+void Foam::periodicElectrostatics::potentials
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    scalarField& phi
+) const
+{
+    FatalErrorInFunction
+        << "Method " << method() << " gives no potentials (p3m, direct do)"
+        << exit(FatalError);
+}
+
+
+void Foam::periodicElectrostatics::potentialsDistributed
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const List<boundBox>& boxes,
+    scalarField& phi
+) const
+{
+    if (!Pstream::parRun())
     {
-        myStart += allX[proci].size();
+        potentials(x, q, phi);
+        return;
     }
 
-    List<vector> fAll;
-    compute
-    (
-        ListListOps::combine<pointField>(allX, accessOp<pointField>()),
-        ListListOps::combine<scalarField>(allQ, accessOp<scalarField>()),
-        fAll
-    );
-    f = SubList<vector>(fAll, x.size(), myStart);
+    pointField allX;
+    scalarField allQ;
+    label myStart;
+    gatherAll(x, q, allX, allQ, myStart);
+    scalarField phiAll;
+    potentials(allX, allQ, phiAll);
+    phi = SubList<scalar>(phiAll, x.size(), myStart);
 }
 
 

@@ -194,6 +194,58 @@ void Foam::quasiPeriodicDirect::addMinImageDipole
 }
 
 
+void Foam::quasiPeriodicDirect::potentials
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    scalarField& phi
+) const
+{
+    checkInput(x, q);
+    const label N = x.size();
+    const label m = Nper_ - 1;
+    phi.setSize(N);
+    phi = 0;
+    for (label i = 0; i < N; ++i)
+    {
+        for (label j = i + 1; j < N; ++j)
+        {
+            const vector d = minImage(x[i] - x[j]);
+            scalar g = 0;
+            for (label n0 = -m; n0 <= m; ++n0)
+            {
+                for (label n1 = -m; n1 <= m; ++n1)
+                {
+                    for (label n2 = -m; n2 <= m; ++n2)
+                    {
+                        const scalar r = mag
+                        (
+                            vector
+                            (
+                                d.x() + n0*L_.x(),
+                                d.y() + n1*L_.y(),
+                                d.z() + n2*L_.z()
+                            )
+                        );
+                        if (r == 0)
+                        {
+                            FatalErrorInFunction
+                                << "Charges " << i << " and " << j
+                                << " coincide at " << x[i]
+                                << " (modulo the box)" << exit(FatalError);
+                        }
+                        g += 1/r;
+                    }
+                }
+            }
+            phi[i] += q[j]*g;
+            phi[j] += q[i]*g;
+        }
+    }
+    phi *= k_;
+}
+
+
 void Foam::quasiPeriodicDirect::writeInfo(Ostream& os) const
 {
     periodicElectrostatics::writeInfo(os);

@@ -274,6 +274,54 @@ TEST(periodicDirect, ConvergenceInNperAndEwaldLimit)
 }
 
 
+TEST(periodicDirect, PotentialsMinimumImageAndNperDivergence)
+{
+    // Nper = 1 against the minimum-image sum written out here; a
+    // mono-charged cloud's mean potential grows as Nper^2 (Boutsikakis
+    // 2023, Eq. 12 and Fig. 6): as the square of the cube's edge
+    // (2 Nper - 1) L (a uniformly charged cube), so <phi>/(2 Nper - 1)^2
+    // levels off
+    const vector L(1, 1, 1);
+    pointField x;
+    scalarField q;
+    randomCloud(50, L, x, q, true, 43);
+    scalarField phi1;
+    quasiPeriodicDirect(L, 1, 1).potentials(x, q, phi1);
+    const scalar kc = quasiPeriodicDirect(L).k();
+    forAll(x, i)
+    {
+        scalar s = 0;
+        forAll(x, j)
+        {
+            if (j == i) continue;
+            vector d = x[i] - x[j];
+            for (direction c = 0; c < 3; ++c)
+            {
+                d[c] -= L[c]*std::round(d[c]/L[c]);
+            }
+            s += q[j]/mag(d);
+        }
+        EXPECT_NEAR(phi1[i], kc*s, 1e-12*mag(kc*s));
+    }
+    scalarList ratio;
+    for (const label Nper : {4, 6, 8})
+    {
+        scalarField phi;
+        quasiPeriodicDirect(L, 1, Nper).potentials(x, q, phi);
+        ratio.append(average(phi)/sqr(scalar(2*Nper - 1)));
+        Info<< "    Nper " << Nper << ": <phi>/(2 Nper - 1)^2 = " << ratio.last()
+            << nl;
+    }
+    // The limit: the potential at the centre of a uniformly charged cube,
+    // k rho a^2 (3 ln(2 + sqrt 3) - pi/2), rho of the N - 1 other charges
+    const scalar cubeCentre = 3*Foam::log(2 + Foam::sqrt(3.0)) - pi/2;
+    const scalar limit = kc*(x.size() - 1)*1e-9*cubeCentre;
+    Info<< "    limit " << limit << nl;
+    EXPECT_LT(mag(ratio[2]/limit - 1), mag(ratio[0]/limit - 1));
+    EXPECT_LT(mag(ratio[2]/limit - 1), 1e-3);
+}
+
+
 // * * * * * * * * * * * * * * Pseudo-particle  * * * * * * * * * * * * * * //
 
 TEST(periodicPseudoParticle, InteractingChargeSum)
@@ -432,6 +480,54 @@ TEST(periodicP3M, SmallSystemsAndWrapping)
         k->compute(x, q, f);
         k->compute(xs, q, fs);
         EXPECT_LT(rmsDiff(f, fs), 1e-9*rms(f)) << method;
+    }
+}
+
+
+TEST(periodicP3M, PotentialsAreEwaldEnergyDerivatives)
+{
+    // The potential at charge i is dU/dq_i of Ewald's energy (self term
+    // and neutralising background included); U is quadratic in q, so the
+    // central difference with step q0 is exact to round-off. Mixed,
+    // non-neutral cloud in an orthorhombic box; serial P3M against it
+    const vector L(1.0, 0.8, 1.3);
+    pointField x;
+    scalarField q;
+    randomCloud(200, L, x, q, false, 41);
+    q[0] *= 3;
+    const ewaldSum ewald(L);
+    const labelList probe({0, 1, 57, 123, 199});
+    scalarField phiRef(probe.size());
+    forAll(probe, k)
+    {
+        scalarField qp(q), qm(q);
+        qp[probe[k]] += 1e-9;
+        qm[probe[k]] -= 1e-9;
+        phiRef[k] = (ewald.energy(x, qp) - ewald.energy(x, qm))/2e-9;
+    }
+    // Potential scale: k q0 n^(1/3), a charge at the mean spacing
+    const scalar scale =
+        ewald.k()*1e-9*std::cbrt(x.size()/(L.x()*L.y()*L.z()));
+    scalar prev = GREAT;
+    for (const scalar acc : {1e-3, 1e-5})
+    {
+        const p3m pm(L, 1, acc);
+        scalarField phi;
+        pm.potentials(x, q, phi);
+        scalar err = 0;
+        forAll(probe, k)
+        {
+            err = max(err, mag(phi[probe[k]] - phiRef[k]));
+        }
+        // Sum of q phi / 2 is the energy
+        const scalar U = 0.5*sum(q*phi), Uref = ewald.energy(x, q);
+        Info<< "    accuracy " << acc << ": largest |phi - dU/dq| / k q0 "
+            << "n^(1/3) = " << err/scale << ", energy " << U << " vs Ewald "
+            << Uref << nl;
+        EXPECT_LT(err, 10*acc*scale);
+        EXPECT_NEAR(U, Uref, 10*acc*scale*sum(mag(q)));
+        EXPECT_LT(err, prev);
+        prev = err;
     }
 }
 

@@ -672,18 +672,41 @@ void Foam::ChargedCloud<CloudType>::info()
             << electrostatics().nearFieldTime() << nl;
         electrostatics().nearField().info();
 
-        // <|fE|/m> (Boutsikakis 2023 Eq. 28), all processors
-        scalar n = this->size(), sumA = 0;
+        // Boutsikakis 2023 statistics (all processors; primes: fluctuations
+        // about the cloud means, a = fE/m): <|fE|/m> (Eq. 28), the power
+        // <a'.u'> of the agitation's balance (Eq. 29) and the covariance
+        // <fE' fE'> over its mean diagonal F^2 (Eq. 10: isotropic = I)
+        scalar n = this->size(), sumA = 0, sumAU = 0;
+        vector sumAvec(Zero), sumU(Zero), sumF(Zero);
+        symmTensor sumFF(Zero);
         for (const parcelType& p : *this)
         {
-            sumA += mag(p.fE())/p.mass();
+            const vector a = p.fE()/p.mass();
+            sumA += mag(a);
+            sumAU += a & p.U();
+            sumAvec += a;
+            sumU += p.U();
+            sumF += p.fE();
+            sumFF += sqr(p.fE());
         }
         reduce(n, sumOp<scalar>());
         reduce(sumA, sumOp<scalar>());
+        reduce(sumAU, sumOp<scalar>());
+        reduce(sumAvec, sumOp<vector>());
+        reduce(sumU, sumOp<vector>());
+        reduce(sumF, sumOp<vector>());
+        reduce(sumFF, sumOp<symmTensor>());
         if (n > 0)
         {
+            const symmTensor covF = sumFF/n - sqr(sumF/n);
+            const scalar F2 = tr(covF)/3;
             Info<< "    Particle agitation q_p^2        = " << agitation() << nl
-                << "    Mean electrostatic acceleration = " << sumA/n << nl;
+                << "    Mean electrostatic acceleration = " << sumA/n << nl
+                << "    Electrostatic power <a'.u'>     = "
+                << sumAU/n - ((sumAvec/n) & (sumU/n)) << nl
+                << "    Force covariance <F'F'>/F^2     = "
+                << (F2 > 0 ? covF/F2 : symmTensor::zero)
+                << " (F^2 = " << F2 << ")" << nl;
         }
     }
 }

@@ -102,6 +102,48 @@ void Foam::PeriodicCoulomb<CloudType>::reportTimeStep() const
 }
 
 
+template<class CloudType>
+Foam::label Foam::PeriodicCoulomb<CloudType>::readPotentialInterval
+(
+    const dictionary& coeffs
+)
+{
+    const label n = coeffs.getOrDefault<label>("potentialInterval", 0);
+    if (n < 0)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry potentialInterval = " << n << " is out of range"
+            << " [0, inf) (0: no potential statistics)" << exit(FatalIOError);
+    }
+    return n;
+}
+
+
+template<class CloudType>
+void Foam::PeriodicCoulomb<CloudType>::reportPotentials
+(
+    const UList<point>& x,
+    const UList<scalar>& q
+) const
+{
+    scalarField phi;
+    kernel_->potentialsDistributed
+    (
+        x, q, processorHalo::processorBoxes(this->owner().mesh()), phi
+    );
+    scalar n = phi.size(), s = sum(phi), s2 = sumSqr(phi);
+    reduce(n, sumOp<scalar>());
+    reduce(s, sumOp<scalar>());
+    reduce(s2, sumOp<scalar>());
+    if (n > 0)
+    {
+        Info<< "    Potential at the charges <phi>_p = " << s/n
+            << " V, <phi'^2>_p = " << max(s2/n - sqr(s/n), scalar(0))
+            << " V2" << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -114,8 +156,18 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
     ElectrostaticsModel<CloudType>(dict, owner, typeName),
     kernelDict_(kernelDict(this->coeffDict(), owner)),
     kernel_(periodicElectrostatics::New(kernelDict_)),
-    infoWritten_(false)
+    infoWritten_(false),
+    potentialInterval_(readPotentialInterval(this->coeffDict()))
 {
+    if (potentialInterval_ > 0 && !kernel_->hasPotentials())
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry potentialInterval = " << potentialInterval_
+            << ": method " << kernel_->method() << " gives no potentials"
+            << " (p3m and direct do; 0 switches the statistics off)"
+            << exit(FatalIOError);
+    }
+
     const scalar chi = owner.constProps().stiffnessRatio();
     if (chi != 1)
     {
@@ -140,7 +192,8 @@ Foam::PeriodicCoulomb<CloudType>::PeriodicCoulomb
     ElectrostaticsModel<CloudType>(em),
     kernelDict_(em.kernelDict_),
     kernel_(periodicElectrostatics::New(kernelDict_)),
-    infoWritten_(false)
+    infoWritten_(false),
+    potentialInterval_(em.potentialInterval_)
 {}
 
 
@@ -175,6 +228,12 @@ void Foam::PeriodicCoulomb<CloudType>::calculate()
         Info<< "    ";
         kernel_->writeInfo(Info);
         Info<< endl;
+    }
+
+    const label step = this->owner().mesh().time().timeIndex();
+    if (potentialInterval_ > 0 && step % potentialInterval_ == 0)
+    {
+        reportPotentials(x, q);
     }
 
     i = 0;

@@ -1,0 +1,16 @@
+# The scans of Boutsikakis 2023 section 3 (tutorial monoChargedCloud,
+# ./Allrun scan) at their cheapest: the charge and inertia scans at 500
+# particles for 8 tau_el. In units of n^(-1/3) and tau_el (deltaT and
+# endTime are set in them) a run of another charge or mass is the base
+# run, so the normalised agitation, integral time and acceleration must
+# equal the base's to round-off amplified by the chaotic dynamics (tol
+# 1e-3; a term that breaks the scaling - a fixed length, an absolute
+# tolerance, the drag's tau_p - shows at O(1e-2) or more); every run's
+# power balance (Eq. 29) closes.
+. "$(dirname "$0")/common.sh.inc"
+
+copyCase monoChargedCloud "$work/case"
+cd "$work/case" || exit 1
+$PY scan.py --only Q,rho --size 500 --endTauEl 8 -j 2 --check 1e-3 --no-plots \
+    > log.scan 2>&1
+grep -E '^(PASS|FAIL): ' log.scan || fail "monoChargedScans.run (no check lines, see $work/case/log.scan)"
