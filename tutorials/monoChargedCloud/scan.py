@@ -48,11 +48,11 @@ N_BASE = N_PAPER_BASE/L_PAPER**3                # 40.314 /m^3
 Q0, RHO0 = 1e-9, 100.0
 RATIO = 129.09                                  # Table 5, Delta t = 10 ms
 # (Ne, Nv) of the pseudo-particle runs: at 2500 particles Ne = 5 has the
-# cell of the paper's Ne = 8 (2.7 mean spacings), Ne = 3 about that of its
+# cell of the paper's Ne = 8 (2.7 mean spacings), Ne = 4 (3.4) is nearer its
 # Ne = 4; Nv = 2, 3 need Ne >= 6, 8 (2 Nv + 1 <= Ne - 1)
-PSEUDO = ((3, 1), (5, 0), (5, 1), (6, 2), (8, 3))
+PSEUDO = ((4, 1), (5, 0), (5, 1), (6, 2), (8, 3))
 # d_C/delta_l of the time-step scan: Table 5's 25.8 .. 258, and coarser
-DT_RATIOS = (1.614, 3.227, 6.455, 12.909, 25.82, 51.63, RATIO, 258.17)
+DT_RATIOS = (1.614, 3.227, 6.455, 9.128, 12.909, 18.26, 25.82, 51.63, RATIO, 258.17)
 
 
 def plan(a):
@@ -222,12 +222,14 @@ def report(runs, scans, top, a, out):
         rows = [(l, st[n]) for l, n in scans["dt"] if n in st]
         if rows:
             ref = min(rows, key=lambda r: r[1]["dt"])[1]
-            p("| deltaT [s] | d_C/delta_l (set) | d_C/delta_l (measured q_p^2) | q_p^2 [m2/s2] | vs smallest | (abs F)/m | vs smallest |")
-            p("|---|---|---|---|---|---|---|")
+            p("| deltaT [s] | d_C/delta_l (set) | d_C/delta_l (measured q_p^2) | q_p^2 [m2/s2] | vs smallest | (abs F)/m | vs smallest | tau_p^t/tau_el | Eq. 29 residual |")
+            p("|---|---|---|---|---|---|---|---|---|")
             for l, c in sorted(rows, key=lambda r: -r[1]["dt"]):
-                p("| %.4g | %.1f | %.1f | %.4g +- %.2g | %+.1f %% | %.4g +- %.2g | %+.1f %% |" % (
+                res, rate = powerBalance(c) if c["power"] is not None else (np.nan, 1)
+                p("| %.4g | %.1f | %.1f | %.4g +- %.2g | %+.1f %% | %.4g +- %.2g | %+.1f %% | %.3f | %.1e |" % (
                     c["dt"], l, c["dCoverDl"], c["qp2Mean"], c["qp2Err"], 100*(c["qp2Mean"]/ref["qp2Mean"] - 1),
-                    c["accMean"], c["accErr"], 100*(c["accMean"]/ref["accMean"] - 1)))
+                    c["accMean"], c["accErr"], 100*(c["accMean"]/ref["accMean"] - 1), c["tau_t"]/c["pred"]["tau_el"],
+                    math.sqrt(np.mean(res**2)/np.mean(rate**2))))
             p()
     if "rho" in scans:
         p("## Power balance, Eq. 29 with the dissipation: d q_p^2/dt = <a'.u'> - 2 q_p^2/tau_p\n")
@@ -328,13 +330,14 @@ def plots(st, scans, prefix):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    var = {"Q": ("Q", "Q_p [C]"), "rho": ("m", "m_p [kg]"), "N": ("n", "n_p [1/m3]")}
+    import matplotlib.ticker
+    var = {"Q": ("Q", "Q_p [nC]", 1e9), "rho": ("m", "m_p [kg]", 1), "N": ("n", "n_p [1/m3]", 1)}
     fig, ax = plt.subplots(3, 3, figsize=(13, 10))
     for j, scan in enumerate(("Q", "rho", "N")):
         rows = [st[n] for _, n in scans.get(scan, []) if n in st]
         if not rows:
             continue
-        x = np.array([c[var[scan][0]] for c in rows])
+        x = np.array([c[var[scan][0]]*var[scan][2] for c in rows])
         o = np.argsort(x)
         for i, (key, pk, lab) in enumerate((("qp2Mean", "qp2", "q_p^2 [m2/s2]"),
                                             ("tau_t", "tau_el", "tau_p^t [s]"),
@@ -344,13 +347,14 @@ def plots(st, scans, prefix):
             ax[i, j].loglog(x[o], y[o], "o", label="P3M runs")
             ax[i, j].loglog(x[o], ypred[o], "k--", label="Boutsikakis Eq. %s" % {"qp2": 25, "tau_el": 26, "acc": 28}[pk])
             ax[i, j].set_xlabel(var[scan][1]); ax[i, j].set_ylabel(lab)
+            ax[i, j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
             ax[i, j].grid(alpha=0.3, which="both")
             ax[i, j].legend(fontsize=8)
     fig.suptitle("Mono-charged cloud scans (Boutsikakis 2023 Figs. 18, 20, 22)")
     fig.tight_layout()
     fig.savefig(prefix + "_laws.png", dpi=100)
 
-    law = [st[n] for s in ("Q", "rho", "N") for _, n in scans.get(s, []) if n in st]
+    law = [st[n] for n in dict.fromkeys(n for s in ("Q", "rho", "N") for _, n in scans.get(s, [])) if n in st]
     if law:
         fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
         for a_, X, Y, slope, lab in (
@@ -375,12 +379,15 @@ def plots(st, scans, prefix):
         fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
         if rows:
             ref = min(rows, key=lambda r: r[1]["dt"])[1]
-            r = np.array([c["dCoverDl"] for _, c in rows])
+            r = np.array([l for l, _ in rows])
             y = np.array([c["qp2Mean"]/ref["qp2Mean"] for _, c in rows])
-            e = np.array([c["qp2Err"]/ref["qp2Mean"] for _, c in rows])
-            ax[0].errorbar(r, y, yerr=e, fmt="o")
-            ax[0].set_xscale("log"); ax[0].axvline(100, color="k", ls="--", lw=0.8)
-            ax[0].set_xlabel("d_C / delta_l"); ax[0].set_ylabel("q_p^2 / q_p^2 of the smallest step")
+            ya = np.array([c["accMean"]/ref["accMean"] for _, c in rows])
+            ax[0].loglog(r, y, "o-", label="q_p^2")
+            ax[0].loglog(r, ya, "s-", label="<|F_e|>/m_p")
+            ax[0].axvline(100, color="k", ls="--", lw=0.8, label="Eq. 23")
+            ax[0].legend(fontsize=8)
+            ax[0].set_xlabel("d_C / delta_l (deltaT set with Eq. 25's q_p^2)")
+            ax[0].set_ylabel("over the smallest step's")
             ax[0].set_title("Time step (Fig. 17)", fontsize=9); ax[0].grid(alpha=0.3)
         for l, c in rhoRows:
             ax[1].plot(c["t"]/c["tau_el"], c["qp2"]/c["pred"]["qp2"], lw=0.8, label="rho %g" % l)
