@@ -518,6 +518,30 @@ public:
 };
 
 
+// value(y) at the received charges xr, grouped by the processor they came
+// from (fromProc[proci] of them, in order)
+template<class Type, class Value>
+Foam::List<Foam::List<Type>> valuesBySender
+(
+    const Foam::UList<Foam::point>& xr,
+    const Foam::labelList& fromProc,
+    const Value& value
+)
+{
+    Foam::List<Foam::List<Type>> values(fromProc.size());
+    label k = 0;
+    forAll(values, proci)
+    {
+        values[proci].setSize(fromProc[proci]);
+        for (Type& v : values[proci])
+        {
+            v = value(xr[k++]);
+        }
+    }
+    return values;
+}
+
+
 // What the processors whose slabs a charge's stencil touched computed for
 // it (values[proci][j] for the charge sent[proci][j]), sent back to its
 // owner, which calls add(i, value) for each
@@ -1443,16 +1467,10 @@ void Foam::p3m::kSpaceDistributed
     solveMesh();
 
     // This slab's part of each received charge's field, sent back
-    List<List<vector>> sendE(fromProc.size());
-    label k = 0;
-    forAll(sendE, proci)
-    {
-        sendE[proci].setSize(fromProc[proci]);
-        for (vector& E : sendE[proci])
-        {
-            E = interpolate(xr[k++]);
-        }
-    }
+    List<List<vector>> sendE(valuesBySender<vector>
+    (
+        xr, fromProc, [this](const point& y) { return interpolate(y); }
+    ));
     returnFromSlabs
     (
         sendE, sent,
@@ -1483,16 +1501,10 @@ void Foam::p3m::kSpacePotential
     labelList fromProc;
     const List<point> xr(assignOnSlabs(xw, q, sent, fromProc));
     solvePotentialMesh();
-    List<List<scalar>> sendPhi(fromProc.size());
-    label k = 0;
-    forAll(sendPhi, proci)
-    {
-        sendPhi[proci].setSize(fromProc[proci]);
-        for (scalar& v : sendPhi[proci])
-        {
-            v = interpolatePotential(xr[k++]);
-        }
-    }
+    List<List<scalar>> sendPhi(valuesBySender<scalar>
+    (
+        xr, fromProc, [this](const point& y) { return interpolatePotential(y); }
+    ));
     returnFromSlabs
     (
         sendPhi, sent,
@@ -1593,6 +1605,29 @@ void Foam::p3m::compute
 }
 
 
+void Foam::p3m::haloWithin
+(
+    const UList<point>& x,
+    const UList<scalar>& q,
+    const List<boundBox>& boxes,
+    List<point>& xh,
+    List<scalar>& qh
+) const
+{
+    const processorHalo halo
+    (
+        boxes, x, p_.rCut, processorHalo::boxTranslations(L_)
+    );
+    qh = q;
+    halo.gather(qh);
+    xh = halo.points();
+    forAll(xh, i)
+    {
+        xh[i] = wrap(xh[i]);
+    }
+}
+
+
 void Foam::p3m::computeDistributed
 (
     const UList<point>& x,
@@ -1633,17 +1668,9 @@ void Foam::p3m::computeDistributed
     // Real space: this processor's charges and the others' within rCut of
     // its box (unwrapped positions: the halo finds them by the boxes and
     // the periodic translations), then all wrapped for the cell list
-    const processorHalo halo
-    (
-        boxes, x, p_.rCut, processorHalo::boxTranslations(L_)
-    );
-    List<scalar> qh(q);
-    halo.gather(qh);
-    List<point> xh(halo.points());
-    forAll(xh, i)
-    {
-        xh[i] = wrap(xh[i]);
-    }
+    List<point> xh;
+    List<scalar> qh;
+    haloWithin(x, q, boxes, xh, qh);
     nLocal_ = nLocal;
     nHalo_ = xh.size() - nLocal;
     List<vector> fh(xh.size(), Zero);
@@ -1731,17 +1758,9 @@ void Foam::p3m::potentialsDistributed
     tune(N, Q2, true);
 
     // Real space: own charges and the halo within rCut, as the forces
-    const processorHalo halo
-    (
-        boxes, x, p_.rCut, processorHalo::boxTranslations(L_)
-    );
-    List<scalar> qh(q);
-    halo.gather(qh);
-    List<point> xh(halo.points());
-    forAll(xh, i)
-    {
-        xh[i] = wrap(xh[i]);
-    }
+    List<point> xh;
+    List<scalar> qh;
+    haloWithin(x, q, boxes, xh, qh);
     scalarField phih(xh.size(), 0);
     realSpacePotentialSum pairs(p_.alpha);
     realSpacePairs(xh, qh, nLocal, pairs, phih);
