@@ -131,15 +131,18 @@ void Foam::PeriodicCoulomb<CloudType>::reportPotentials
     (
         x, q, processorHalo::processorBoxes(this->owner().mesh()), phi
     );
-    scalar n = phi.size(), s = sum(phi), s2 = sumSqr(phi);
+    // Two passes: the mean may be far larger than the spread (direct,
+    // Nper > 1: it grows as Nper^2)
+    scalar n = phi.size(), s = sum(phi);
     reduce(n, sumOp<scalar>());
     reduce(s, sumOp<scalar>());
-    reduce(s2, sumOp<scalar>());
     if (n > 0)
     {
-        Info<< "    Potential at the charges <phi>_p = " << s/n
-            << " V, <phi'^2>_p = " << max(s2/n - sqr(s/n), scalar(0))
-            << " V2" << endl;
+        const scalar mean = s/n;
+        scalar s2 = sumSqr(phi - mean);
+        reduce(s2, sumOp<scalar>());
+        Info<< "    Potential at the charges <phi>_p = " << mean
+            << " V, <phi'^2>_p = " << s2/n << " V2" << endl;
     }
 }
 
