@@ -2,29 +2,35 @@
 """Boutsikakis 2023 section 3 scans of the mono-charged cloud (P3M).
 
     scan.py [--size N] [--nFraction f] [--endTauEl T] [-j J] [--only s,...]
-            [--report-only] [--png-prefix scan]
+            [--report-only] [--check TOL] [--no-plots] [--png-prefix scan]
 
-One parameter at a time around the base point (Q = 5 nC, m = 1.8e-4 kg,
-n = 40.314 /m^3; section 3.3):
-  Q    Q in {1..6} nC                               (Fig. 18 left)
-  rho  rho in {200, 100, 50, 27.5, 15} x 100 kg/m3  (m through rho at d = 5 mm)
-  N    n of N in {10, 25, 50, 100, 150} x 1e3 in the 2 pi m cube, run with
-       nFraction of those particles in a cube of the same n (default 0.1)
-  dt   d_C/delta_l in {12.9, 25.8, 51.6, 129, 258} (Table 5, Fig. 17)
-  size N in {1000, 2500, 5000, 10000} at the base point: the statistics'
-       convergence in N (the Q, rho and dt scans run --size particles)
+Around the base point (Q = 5 nC, m = 1.8e-4 kg, n = 40.314 /m^3; section
+3.3), --size particles (default 2500) unless said:
+  Q        Q in {1..6} nC                               (Fig. 18)
+  rho      rho in {200, 100, 50, 27.5, 15} x 100 kg/m3  (m at d = 5 mm)
+  N        n of N in {10, 25, 50, 100, 150} x 1e3 in the 2 pi m cube, run
+           with nFraction of those particles in a cube of the same n
+  dt       d_C/delta_l from 1.6 to 258 (Table 5, Fig. 17)
+  dt4      the same at 4 x size particles, 9.1 to 51.6 (and the N scan's
+           run of that size as its finest step)
+  seed     three random starts
+  collapse one N and seed at two number densities
+  pseudo   the direct sum, the pseudo-particle method (Ne, Nv) and P3M
+           (Table 3, Fig. 16)
 Each run lasts endTauEl tau_el (default 18, Eq. 26) with deltaT at
-d_C/delta_l = 129 (Table 5's converged row; Eq. 23 asks >= 100), and
-averages over its second half. Runs go to runs/scan/<name> and are reused
-when their log ends; J at a time (default 2).
+d_C/delta_l = 129 (Table 5's converged row; Eq. 23 asks >= 100) unless
+scanned, and averages over its second half. In units of n^(-1/3) and
+tau_el the runs of the Q, rho and N scans differ only in N: the laws'
+exponents are exact, their coefficients are measured. Runs go to
+runs/scan/<name> and are reused when their log ends; J at a time.
 
-Report (results.scan.txt and <prefix>*.png): per scan q_p^2, tau_p^t,
-<|F|>/m against Eqs. 25, 26, 28 with batch-means standard errors; the
-exponents fitted to each one-parameter scan against the laws' exponents;
-the regressions of Figs. 19, 21, 22 over all runs (slope through the
-origin, R^2) against the paper's coefficients (1, sqrt(3/2) for tau_el in
-units of sqrt(m/(k n))/Q, 5/2); the time-step table; the power balance of
-Eq. 29 for the inertias of the rho scan.
+Report (results.scan.txt and <prefix>_*.png): per scan q_p^2, tau_p^t,
+<|F|>/m against Eqs. 25, 26, 28 (batch-means errors), the fitted
+exponents, the regressions of Figs. 19, 21, 22 (slope through the origin,
+R^2), the time-step tables, the power balance of Eq. 29, the isotropy of
+Eq. 10, the potential statistics (Figs. 26-27) and the kernels' statistics
+and force PDFs. --check TOL prints the PASS/FAIL lines of the test
+monoChargedScans.
 """
 import argparse
 import concurrent.futures
