@@ -310,12 +310,130 @@ std::vector<std::array<label, 3>> halfStencil(const label reach)
 }
 
 
+// The pair forces within rc2 of the sorted charges c, by cells of the
+// periodic box L and the stencil of reach cells, added to (fx, fy, fz) in
+// sorted order. Candidates within rc are first compacted without branches
+// (the accept test is unpredictable: about 27 % pass), then their forces
+// computed in a second, predictable loop
+template<class Force>
+void cellPairForces
+(
+    const cellSortedCharges& c,
+    const Foam::vector& L,
+    const label reach,
+    const scalar rc2,
+    const Force& pairForce,
+    std::vector<scalar>& fx,
+    std::vector<scalar>& fy,
+    std::vector<scalar>& fz
+)
+{
+    const label* nc = c.nc;
+    const std::vector<label>& start = c.start;
+    const std::vector<label>& kept = c.kept;
+    const std::vector<scalar>& xs = c.xs;
+    const std::vector<scalar>& ys = c.ys;
+    const std::vector<scalar>& zs = c.zs;
+    const std::vector<scalar>& qs = c.qs;
+    const label nCells = nc[0]*nc[1]*nc[2];
+    const std::vector<std::array<label, 3>> stencil(halfStencil(reach));
+    label maxCell = 0;
+    for (label cl = 0; cl < nCells; ++cl)
+    {
+        maxCell = std::max(maxCell, start[cl + 1] - start[cl]);
+    }
+    const label nSt = stencil.size();
+    const label cap = maxCell*(nSt + 1) + 1;
+    std::vector<label> bt(cap);
+    std::vector<scalar> bx(cap), by(cap), bz(cap), br(cap);
+    std::vector<label> nb0(nSt), nb1(nSt);
+    std::vector<scalar> shx(nSt), shy(nSt), shz(nSt);
+
+    for (label cz = 0; cz < nc[2]; ++cz)
+    for (label cy = 0; cy < nc[1]; ++cy)
+    for (label cx = 0; cx < nc[0]; ++cx)
+    {
+        const label cl = cx + nc[0]*(cy + nc[1]*cz);
+        const label s0 = start[cl], s1 = start[cl + 1];
+        if (s0 == s1) continue;
+
+        // Neighbour cells with their periodic shifts
+        for (label k = 0; k < nSt; ++k)
+        {
+            const auto& o = stencil[k];
+            label cn[3] = {cx + o[0], cy + o[1], cz + o[2]};
+            scalar sh[3] = {0, 0, 0};
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                if (cn[d] < 0) { cn[d] += nc[d]; sh[d] = -L[d]; }
+                else if (cn[d] >= nc[d]) { cn[d] -= nc[d]; sh[d] = L[d]; }
+            }
+            const label cc = cn[0] + nc[0]*(cn[1] + nc[1]*cn[2]);
+            nb0[k] = start[cc];
+            nb1[k] = start[cc + 1];
+            shx[k] = sh[0];
+            shy[k] = sh[1];
+            shz[k] = sh[2];
+        }
+
+        for (label s = s0; s < s1; ++s)
+        {
+            const scalar xi = xs[s], yi = ys[s], zi = zs[s], qi = qs[s];
+            const label keptI = kept[s];
+            label m = 0;
+            for (label t = s + 1; t < s1; ++t)
+            {
+                const scalar dx = xi - xs[t], dy = yi - ys[t],
+                    dz = zi - zs[t];
+                const scalar r2 = dx*dx + dy*dy + dz*dz;
+                bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz; br[m] = r2;
+                m += (r2 < rc2) & (keptI | kept[t]);
+            }
+            for (label k = 0; k < nSt; ++k)
+            {
+                const scalar xk = xi - shx[k], yk = yi - shy[k],
+                    zk = zi - shz[k];
+                for (label t = nb0[k]; t < nb1[k]; ++t)
+                {
+                    const scalar dx = xk - xs[t], dy = yk - ys[t],
+                        dz = zk - zs[t];
+                    const scalar r2 = dx*dx + dy*dy + dz*dz;
+                    bt[m] = t; bx[m] = dx; by[m] = dy; bz[m] = dz;
+                    br[m] = r2;
+                    m += (r2 < rc2) & (keptI | kept[t]);
+                }
+            }
+
+            scalar fxi = 0, fyi = 0, fzi = 0;
+            for (label j = 0; j < m; ++j)
+            {
+                const scalar r2 = br[j];
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Charges " << c.order[s] << " and " << c.order[bt[j]]
+                        << " coincide (modulo the box)"
+                        << Foam::exit(Foam::FatalError);
+                }
+                const label t = bt[j];
+                const scalar g = qi*qs[t]*pairForce(r2);
+                const scalar gx = g*bx[j], gy = g*by[j], gz = g*bz[j];
+                fxi += gx; fyi += gy; fzi += gz;
+                fx[t] -= gx; fy[t] -= gy; fz[t] -= gz;
+            }
+            fx[s] += fxi; fy[s] += fyi; fz[s] += fzi;
+        }
+    }
+}
+
+
 // Visits the pairs within rc2 of the sorted charges c, by cells of the
-// periodic box L and the stencil of reach cells: v.begin(s), v.pair(s, t,
-// dx, dy, dz, r2) for each partner t of s (indices in sorted order, each
-// pair once), v.end(s). Candidates within rc are first compacted without
-// branches (the accept test is unpredictable: about 27 % pass), then
-// visited in a second, predictable loop
+// periodic box L and the stencil of reach cells: v.visit(s, m, t, dx, dy,
+// dz, r2) with the m partners t of s (indices in sorted order, each pair
+// once). The potentials' traversal: the forces keep cellPairForces, the
+// same traversal written out (a visitor there measured 13 % slower real
+// space, median of 5 pairs at 5e4 charges). Candidates within rc are
+// compacted first, as there
 template<class Visitor>
 void cellPairs
 (
@@ -401,7 +519,6 @@ void cellPairs
                 }
             }
 
-            v.begin(s);
             for (label j = 0; j < m; ++j)
             {
                 if (br[j] == 0)
@@ -411,63 +528,11 @@ void cellPairs
                         << " coincide (modulo the box)"
                         << Foam::exit(Foam::FatalError);
                 }
-                v.pair(s, bt[j], bx[j], by[j], bz[j], br[j]);
             }
-            v.end(s);
+            v.visit(s, m, bt.data(), bx.data(), by.data(), bz.data(), br.data());
         }
     }
 }
-
-
-// Pair visitor of the real-space forces q_i q_j g(r^2) r (Newton's third
-// law), in the visiting order; finish adds them to f in the charges' order
-template<class Force>
-class realSpaceForceSum
-{
-    const scalar* q_;
-    const Force& pairForce_;
-    std::vector<scalar> fx_, fy_, fz_;
-    scalar fxi_, fyi_, fzi_;
-
-public:
-
-    explicit realSpaceForceSum(const Force& pairForce)
-    :
-        q_(nullptr), pairForce_(pairForce), fxi_(0), fyi_(0), fzi_(0)
-    {}
-
-    void start(const std::vector<scalar>& q)
-    {
-        q_ = q.data();
-        fx_.assign(q.size(), 0);
-        fy_.assign(q.size(), 0);
-        fz_.assign(q.size(), 0);
-    }
-
-    void begin(const label) { fxi_ = fyi_ = fzi_ = 0; }
-
-    void pair
-    (
-        const label s, const label t,
-        const scalar dx, const scalar dy, const scalar dz, const scalar r2
-    )
-    {
-        const scalar g = q_[s]*q_[t]*pairForce_(r2);
-        const scalar gx = g*dx, gy = g*dy, gz = g*dz;
-        fxi_ += gx; fyi_ += gy; fzi_ += gz;
-        fx_[t] -= gx; fy_[t] -= gy; fz_[t] -= gz;
-    }
-
-    void end(const label s) { fx_[s] += fxi_; fy_[s] += fyi_; fz_[s] += fzi_; }
-
-    void finish(const std::vector<label>& order, Foam::UList<Foam::vector>& f)
-    {
-        for (size_t s = 0; s < order.size(); ++s)
-        {
-            f[order[s]] += Foam::vector(fx_[s], fy_[s], fz_[s]);
-        }
-    }
-};
 
 
 // Pair visitor of the real-space potentials q_j erfc(a r)/r (std::erfc:
@@ -477,13 +542,12 @@ class realSpacePotentialSum
     const scalar* q_;
     const scalar a_;
     std::vector<scalar> phi_;
-    scalar phii_;
 
 public:
 
     explicit realSpacePotentialSum(const scalar alpha)
     :
-        q_(nullptr), a_(alpha), phii_(0)
+        q_(nullptr), a_(alpha)
     {}
 
     void start(const std::vector<scalar>& q)
@@ -492,21 +556,23 @@ public:
         phi_.assign(q.size(), 0);
     }
 
-    void begin(const label) { phii_ = 0; }
-
-    void pair
+    void visit
     (
-        const label s, const label t,
-        const scalar, const scalar, const scalar, const scalar r2
+        const label s, const label m, const label* bt,
+        const scalar*, const scalar*, const scalar*, const scalar* br
     )
     {
-        const scalar r = std::sqrt(r2);
-        const scalar e = std::erfc(a_*r)/r;
-        phii_ += q_[t]*e;
-        phi_[t] += q_[s]*e;
+        scalar phii = 0;
+        for (label j = 0; j < m; ++j)
+        {
+            const label t = bt[j];
+            const scalar r = std::sqrt(br[j]);
+            const scalar e = std::erfc(a_*r)/r;
+            phii += q_[t]*e;
+            phi_[t] += q_[s]*e;
+        }
+        phi_[s] += phii;
     }
-
-    void end(const label s) { phi_[s] += phii_; }
 
     void finish(const std::vector<label>& order, Foam::UList<scalar>& phi)
     {
@@ -1177,7 +1243,8 @@ void Foam::p3m::realSpacePairs
         v.start(qs);
         for (label i = 0; i < N; ++i)
         {
-            v.begin(i);
+            std::vector<label> bt;
+            std::vector<scalar> bx, by, bz, br;
             for (label j = i + 1; j < N; ++j)
             {
                 const vector r = minImage(xw[i] - xw[j]);
@@ -1189,9 +1256,17 @@ void Foam::p3m::realSpacePairs
                         << "Charges " << i << " and " << j << " coincide"
                         << exit(FatalError);
                 }
-                v.pair(i, j, r.x(), r.y(), r.z(), r2);
+                bt.push_back(j);
+                bx.push_back(r.x());
+                by.push_back(r.y());
+                bz.push_back(r.z());
+                br.push_back(r2);
             }
-            v.end(i);
+            v.visit
+            (
+                i, bt.size(), bt.data(), bx.data(), by.data(), bz.data(),
+                br.data()
+            );
         }
         v.finish(order, result);
         return;
@@ -1213,9 +1288,60 @@ void Foam::p3m::realSpace
     const label nOwn
 ) const
 {
-    const realSpaceForce pairForce(p_.alpha, p_.rCut, p_.fastErfc, tab_);
-    realSpaceForceSum<realSpaceForce> forces(pairForce);
-    realSpacePairs(xw, q, nOwn, forces, f);
+    const label N = xw.size();
+    // Pairs of two copies (a halo's) give nothing this processor keeps
+    const label nKept = nOwn < 0 ? N : nOwn;
+    const scalar rc = p_.rCut, rc2 = rc*rc;
+    const realSpaceForce pairForce(p_.alpha, rc, p_.fastErfc, tab_);
+
+    // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
+    // vs 15 % for cells of rc), else rc, else all pairs
+    label nc[3];
+    label reach = 2;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nc[d] = label(2*L_[d]/rc);
+        if (nc[d] < 5) reach = 1;
+    }
+    if (reach == 1)
+    {
+        for (direction d = 0; d < 3; ++d) nc[d] = label(L_[d]/rc);
+    }
+
+    if (nc[0] < 3 || nc[1] < 3 || nc[2] < 3)
+    {
+        // Few cells: all pairs, minimum image (rc <= L/2 is checked)
+        for (label i = 0; i < N; ++i)
+        {
+            vector fi(Zero);
+            for (label j = i + 1; j < N; ++j)
+            {
+                const vector r = minImage(xw[i] - xw[j]);
+                const scalar r2 = magSqr(r);
+                if (r2 >= rc2 || (i >= nKept && j >= nKept)) continue;
+                if (r2 == 0)
+                {
+                    FatalErrorInFunction
+                        << "Charges " << i << " and " << j << " coincide"
+                        << exit(FatalError);
+                }
+                const vector fij = (q[i]*q[j]*pairForce(r2))*r;
+                fi += fij;
+                f[j] -= fij;
+            }
+            f[i] += fi;
+        }
+        return;
+    }
+
+    // Cell list, charges sorted by cell
+    const cellSortedCharges sorted(xw, q, nKept, L_, nc);
+    std::vector<scalar> fx(N, 0), fy(N, 0), fz(N, 0);
+    cellPairForces(sorted, L_, reach, rc2, pairForce, fx, fy, fz);
+    for (label s = 0; s < N; ++s)
+    {
+        f[sorted.order[s]] += vector(fx[s], fy[s], fz[s]);
+    }
 }
 
 
