@@ -190,12 +190,14 @@ print("%s: bemClusters.neighbours.restart (second step after a restart vs uninte
 PYEOF
 
 # The same scene with 8 more parcels far from every triad, solved every
-# third step, serial and on 2 processors for 7 steps: only the parcels in
-# or near clusters are gathered (24 of 32, each processor marking its own
-# from a halo), the far ones keep their point charges and dipoles, the
-# bound charge is carried between solves (kept by its home processor,
-# fetched by the cluster's solver), and the two runs agree
-for np_ in 1 2
+# third step, serial and on 2 and 4 processors for 7 steps (every cluster
+# across the plane x = 0): only the parcels in or near clusters take part
+# (24 of 32, each processor marking its own from a halo, each cluster
+# solved by the processor of its smallest-id member), the far ones keep
+# their point charges and dipoles, the bound charge is carried between
+# solves (kept by its home processor, fetched by the cluster's solver),
+# and the runs agree
+for np_ in 1 2 4
 do
     neighbourCase "$work/neighbours/dilute$np_" dilute
     (
@@ -205,7 +207,8 @@ do
         then
             run solver chargedParticleFoam
         else
-            run decomposePar decomposePar && run solver mpirun -np 2 chargedParticleFoam -parallel
+            [ "$np_" = 4 ] && setDecomposition 4 "2 2 1"
+            run decomposePar decomposePar && run solver mpirun -np $np_ chargedParticleFoam -parallel
         fi
     ) || fail "bemClusters.dilute$np_ (failed)"
     grep -Eq "BEM parcels in or near clusters = 24 of 32" "$work/neighbours/dilute$np_/log.solver" \
@@ -226,16 +229,17 @@ def last(case):
     return (h[:, [c[a] for a in "xyz"]], h[:, [c["fE" + a] for a in "xyz"]],
             h[:, [c["tE" + a] for a in "xyz"]], h[0, c["time"]])
 xs, fs, ts, t1 = last(sys.argv[1] + "/dilute1")
-xp, fp, tp, t2 = last(sys.argv[1] + "/dilute2")
-m = np.array([int(np.argmin(np.linalg.norm(xp - x, axis=1))) for x in xs])
-fp, tp = fp[m], tp[m]
-eF = np.abs(fs - fp).max()/np.abs(fs).max()
-eT = np.abs(ts - tp).max()/np.abs(ts).max()
-ok = (len(xs) == len(xp) == 32 and abs(t1 - 7e-6) < 1e-12 and abs(t2 - 7e-6) < 1e-12
-      and sorted(m) == list(range(32)) and eF < 1e-10 and eT < 1e-10)
-print("%s: bemClusters.dilute.parallel (seventh step, 2 processors vs serial, 24 parcels in or"
-      " near clusters and 8 far ones: force difference %.1e, torque %.1e; tol 1e-10)"
-      % ("PASS" if ok else "FAIL", eF, eT))
+for n in (2, 4):
+    xp, fp, tp, t2 = last(sys.argv[1] + "/dilute%d" % n)
+    m = np.array([int(np.argmin(np.linalg.norm(xp - x, axis=1))) for x in xs])
+    fp, tp = fp[m], tp[m]
+    eF = np.abs(fs - fp).max()/np.abs(fs).max()
+    eT = np.abs(ts - tp).max()/np.abs(ts).max()
+    ok = (len(xs) == len(xp) == 32 and abs(t1 - 7e-6) < 1e-12 and abs(t2 - 7e-6) < 1e-12
+          and sorted(m) == list(range(32)) and eF < 1e-10 and eT < 1e-10)
+    print("%s: bemClusters.dilute.parallel%d (seventh step, %d processors vs serial, 24 parcels in"
+          " or near clusters and 8 far ones: force difference %.1e, torque %.1e; tol 1e-10)"
+          % ("PASS" if ok else "FAIL", n, n, eF, eT))
 PYEOF
 
 # Two like-charged spheres (radii 50 and 100 um, epsilonR 10) released

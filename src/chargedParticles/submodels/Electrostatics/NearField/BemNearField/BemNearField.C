@@ -145,6 +145,148 @@ void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
     }
 }
 
+//- Of a store kept at homes (each entry on the processor home(id)), the
+//  entries of the given ids: asked of their homes, point to point.
+//  Collective
+template<class First, class Second, class Home>
+std::map<labelPair, std::pair<First, Second>> fetchFromHomes
+(
+    const std::map<labelPair, std::pair<First, Second>>& store,
+    const UList<labelPair>& wanted,
+    const Home& home
+)
+{
+    std::map<labelPair, std::pair<First, Second>> found;
+    if (!Pstream::parRun())
+    {
+        for (const labelPair& id : wanted)
+        {
+            const auto iter = store.find(id);
+            if (iter != store.end())
+            {
+                found.insert(*iter);
+            }
+        }
+        return found;
+    }
+    List<DynamicList<labelPair>> asked(Pstream::nProcs());
+    for (const labelPair& id : wanted)
+    {
+        asked[home(id)].append(id);
+    }
+    PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
+    forAll(asked, proci)
+    {
+        if (asked[proci].size())
+        {
+            UOPstream os(proci, questions);
+            os << List<labelPair>(asked[proci]);
+        }
+    }
+    labelList sizes;
+    questions.finishedSends(sizes);
+    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, questions);
+        const List<labelPair> ids(is);
+        DynamicList<labelPair> have;
+        DynamicList<First> firsts;
+        DynamicList<Second> seconds;
+        for (const labelPair& id : ids)
+        {
+            const auto iter = store.find(id);
+            if (iter != store.end())
+            {
+                have.append(id);
+                firsts.append(iter->second.first);
+                seconds.append(iter->second.second);
+            }
+        }
+        UOPstream os(proci, answers);
+        os  << List<labelPair>(have) << List<First>(firsts)
+            << List<Second>(seconds);
+    }
+    answers.finishedSends(sizes);
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, answers);
+        const List<labelPair> ids(is);
+        const List<First> firsts(is);
+        const List<Second> seconds(is);
+        forAll(ids, k)
+        {
+            found.emplace(ids[k], std::make_pair(firsts[k], seconds[k]));
+        }
+    }
+    return found;
+}
+
+
+//- The new store kept at homes: each entry of solved (solved by this
+//  processor) sent to its home, point to point. Collective
+template<class First, class Second, class Home>
+void storeAtHomes
+(
+    std::map<labelPair, std::pair<First, Second>>& solved,
+    std::map<labelPair, std::pair<First, Second>>& store,
+    const Home& home
+)
+{
+    if (!Pstream::parRun())
+    {
+        store.swap(solved);
+        return;
+    }
+    const label nProcs = Pstream::nProcs();
+    List<DynamicList<labelPair>> ids(nProcs);
+    List<DynamicList<First>> firsts(nProcs);
+    List<DynamicList<Second>> seconds(nProcs);
+    for (const auto& entry : solved)
+    {
+        const label h = home(entry.first);
+        ids[h].append(entry.first);
+        firsts[h].append(entry.second.first);
+        seconds[h].append(entry.second.second);
+    }
+    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+    forAll(ids, proci)
+    {
+        if (ids[proci].size())
+        {
+            UOPstream os(proci, buffers);
+            os  << List<labelPair>(ids[proci]) << List<First>(firsts[proci])
+                << List<Second>(seconds[proci]);
+        }
+    }
+    labelList sizes;
+    buffers.finishedSends(sizes);
+    store.clear();
+    forAll(sizes, proci)
+    {
+        if (!sizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, buffers);
+        const List<labelPair> got(is);
+        const List<First> gotFirsts(is);
+        const List<Second> gotSeconds(is);
+        forAll(got, k)
+        {
+            store.emplace(got[k], std::make_pair(gotFirsts[k], gotSeconds[k]));
+        }
+    }
+}
+
 } // End namespace bemNearFieldDetail
 } // End namespace Foam
 
@@ -294,11 +436,14 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 template<class CloudType>
 void Foam::BemNearField<CloudType>::writeState() const
 {
-    // Every home's members (a restart may decompose differently)
+    // Every home's members (a restart may decompose differently): the one
+    // all-gather, at write times
     boundChargeMap all(lastSigmaB_);
+    momentsMap used(usedMoments_);
     if (Pstream::parRun())
     {
         bemNearFieldDetail::allGatherEntries(all);
+        bemNearFieldDetail::allGatherEntries(used);
     }
 
     labelList ids(2*all.size());
@@ -314,8 +459,8 @@ void Foam::BemNearField<CloudType>::writeState() const
         ids[2*k + 1] = entry.first.second();
         meshes[k] = entry.second.first;
         sigmaB[k] = entry.second.second;
-        const auto m = usedMoments_.find(entry.first);
-        if (m != usedMoments_.end())
+        const auto m = used.find(entry.first);
+        if (m != used.end())
         {
             dipoles[k] = m->second.first;
             quadrupoles[k] = m->second.second;
@@ -341,143 +486,6 @@ Foam::label Foam::BemNearField<CloudType>::homeOf(const labelPair& id)
     const uint64_t h =
         uint64_t(id.first())*2654435761u + uint64_t(id.second())*40503u;
     return label(h % uint64_t(Pstream::nProcs()));
-}
-
-
-template<class CloudType>
-typename Foam::BemNearField<CloudType>::boundChargeMap
-Foam::BemNearField<CloudType>::fetchBoundCharge
-(
-    const List<labelPair>& members
-) const
-{
-    boundChargeMap known;
-    if (!Pstream::parRun())
-    {
-        for (const labelPair& id : members)
-        {
-            const auto iter = lastSigmaB_.find(id);
-            if (iter != lastSigmaB_.end())
-            {
-                known.insert(*iter);
-            }
-        }
-        return known;
-    }
-
-    // The ids to their homes, which answer with what they keep
-    List<DynamicList<labelPair>> asked(Pstream::nProcs());
-    for (const labelPair& id : members)
-    {
-        asked[homeOf(id)].append(id);
-    }
-    PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
-    forAll(asked, proci)
-    {
-        if (asked[proci].size())
-        {
-            UOPstream os(proci, questions);
-            os << List<labelPair>(asked[proci]);
-        }
-    }
-    labelList sizes;
-    questions.finishedSends(sizes);
-    PstreamBuffers answers(Pstream::commsTypes::nonBlocking);
-    forAll(sizes, proci)
-    {
-        if (!sizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, questions);
-        const List<labelPair> ids(is);
-        DynamicList<labelPair> found;
-        DynamicList<meshKey> meshes;
-        DynamicList<scalarField> values;
-        for (const labelPair& id : ids)
-        {
-            const auto iter = lastSigmaB_.find(id);
-            if (iter != lastSigmaB_.end())
-            {
-                found.append(id);
-                meshes.append(iter->second.first);
-                values.append(iter->second.second);
-            }
-        }
-        UOPstream os(proci, answers);
-        os  << List<labelPair>(found) << List<meshKey>(meshes)
-            << List<scalarField>(values);
-    }
-    answers.finishedSends(sizes);
-    forAll(sizes, proci)
-    {
-        if (!sizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, answers);
-        const List<labelPair> ids(is);
-        const List<meshKey> meshes(is);
-        const List<scalarField> values(is);
-        forAll(ids, k)
-        {
-            known.emplace(ids[k], std::make_pair(meshes[k], values[k]));
-        }
-    }
-    return known;
-}
-
-
-template<class CloudType>
-void Foam::BemNearField<CloudType>::storeBoundCharge(boundChargeMap& solved)
-{
-    if (!Pstream::parRun())
-    {
-        lastSigmaB_.swap(solved);
-        return;
-    }
-    const label nProcs = Pstream::nProcs();
-    List<DynamicList<labelPair>> ids(nProcs);
-    List<DynamicList<meshKey>> meshes(nProcs);
-    List<DynamicList<scalarField>> values(nProcs);
-    for (const auto& entry : solved)
-    {
-        const label home = homeOf(entry.first);
-        ids[home].append(entry.first);
-        meshes[home].append(entry.second.first);
-        values[home].append(entry.second.second);
-    }
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(ids, proci)
-    {
-        if (ids[proci].size())
-        {
-            UOPstream os(proci, buffers);
-            os  << List<labelPair>(ids[proci]) << List<meshKey>(meshes[proci])
-                << List<scalarField>(values[proci]);
-        }
-    }
-    labelList sizes;
-    buffers.finishedSends(sizes);
-    lastSigmaB_.clear();
-    forAll(sizes, proci)
-    {
-        if (!sizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, buffers);
-        const List<labelPair> got(is);
-        const List<meshKey> gotMeshes(is);
-        const List<scalarField> gotValues(is);
-        forAll(got, k)
-        {
-            lastSigmaB_.emplace
-            (
-                got[k], std::make_pair(gotMeshes[k], gotValues[k])
-            );
-        }
-    }
 }
 
 
@@ -533,10 +541,13 @@ void Foam::BemNearField<CloudType>::readState()
         if (homeOf(id) == Pstream::myProcNo())
         {
             lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
-        }
-        if (hasMoments[k])
-        {
-            lastMoments_.emplace(id, bodyMoments(dipoles[k], quadrupoles[k]));
+            if (hasMoments[k])
+            {
+                lastMoments_.emplace
+                (
+                    id, bodyMoments(dipoles[k], quadrupoles[k])
+                );
+            }
         }
     }
 }
@@ -677,13 +688,17 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
     const tensorField& R,
     const vectorField& S,
     const scalarField& K,
+    const scalarField& keys,
     const scalar kappa0,
-    scalar& dMax
+    scalar& dMax,
+    scalarField& clusterKey,
+    labelList& solver,
+    scalar& reach
 )
 {
     using namespace bemNearFieldDetail;
 
-    // The reach of a close pair (as correct() searches them) and the
+    // The reach of a close pair (as formClusters searches them) and the
     // near-field radius, over all processors
     scalar sMax = 0;
     dMax = 0;
@@ -708,17 +723,21 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
         max(rCut, rNear)
     );
     const pointField& xh = halo.points();
+    const label n = x.size();
+    const label nh = xh.size();
     tensorField Rh(R);
     vectorField Sh(S);
     scalarField Kh(K);
+    scalarField keyh(keys);
     halo.gather(Rh);
     halo.gather(Sh);
     halo.gather(Kh);
+    halo.gather(keyh);
 
-    // Members: a close partner (the same test as correct()'s); the
-    // copies' flags from their owners (their partners may lie beyond this
-    // processor's halo)
-    List<bool> member(xh.size(), false);
+    // Members: a close partner (the test of formClusters); the links seen
+    // here (a link across processors is seen by both: each end lies in
+    // the other's halo)
+    DynamicList<labelPair> links;
     if (rCut > 0)
     {
         forPairsWithinCutoff
@@ -734,18 +753,96 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
                     centreLineGap(Sh[a], Rh[a], Sh[b], Rh[b], r, r2);
                 if (g < clusterGap_*min(cmptMin(Sh[a]), cmptMin(Sh[b])))
                 {
-                    member[a] = member[b] = true;
+                    links.append(labelPair(a, b));
                 }
             }
         );
     }
-    halo.updateHalo(member);
+
+    // Each member's cluster: the smallest id key of its component, and
+    // the processor of that member, propagated through the halo until no
+    // processor changes (a cluster crossing k processor boundaries takes
+    // about k + 1 rounds)
+    scalarField key(nh, -1);
+    labelList owner(nh, -1);
+    pointField xMin(xh);
+    for (const labelPair& l : links)
+    {
+        for (const label e : {l.first(), l.second()})
+        {
+            key[e] = keyh[e];
+        }
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        owner[i] = key[i] >= 0 ? Pstream::myProcNo() : -1;
+    }
+    halo.updateHalo(owner);
+    while (true)
+    {
+        labelList parent(identity(nh));
+        for (const labelPair& l : links)
+        {
+            const label ra = root(parent, l.first());
+            const label rb = root(parent, l.second());
+            parent[max(ra, rb)] = min(ra, rb);
+        }
+        // The smallest key of each component (at its root)
+        labelList best(identity(nh));
+        for (label e = 0; e < nh; ++e)
+        {
+            if (key[e] >= 0)
+            {
+                const label r = root(parent, e);
+                if (key[e] < key[best[r]])
+                {
+                    best[r] = e;
+                }
+            }
+        }
+        bool changed = false;
+        for (label i = 0; i < n; ++i)
+        {
+            const label b = best[root(parent, i)];
+            if (key[i] >= 0 && key[b] < key[i])
+            {
+                key[i] = key[b];
+                owner[i] = owner[b];
+                xMin[i] = xMin[b];
+                changed = true;
+            }
+        }
+        if (!returnReduce(changed, orOp<bool>()))
+        {
+            break;
+        }
+        halo.updateHalo(key);
+        halo.updateHalo(owner);
+        halo.updateHalo(xMin);
+    }
+    clusterKey = SubField<scalar>(key, n);
+    solver = SubList<label>(owner, n);
+    reach = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        if (key[i] >= 0)
+        {
+            reach = max(reach, mag(x[i] - xMin[i]));
+        }
+    }
+    reduce(reach, maxOp<scalar>());
+    reach += rNear;
 
     // Needed: the members and the parcels within rNear of one
-    boolList needed(SubList<bool>(member, x.size()));
+    List<bool> member(nh, false);
+    forAll(key, e)
+    {
+        member[e] = key[e] >= 0;
+    }
+    halo.updateHalo(member);
+    boolList needed(SubList<bool>(member, n));
     if (rNear > 0)
     {
-        const label n = x.size();
         forPairsWithinCutoff
         (
             xh, xh, rNear, 0,
@@ -785,7 +882,8 @@ void Foam::BemNearField<CloudType>::gatherParcels
     vectorField myS(n);
     scalarField myQ(n);
     scalarField myK(n);
-    labelList myId(2*n);
+    scalarField myKey(n);
+    List<labelPair> myId(n);
     label i = 0;
     for (const auto& p : cloud)
     {
@@ -794,14 +892,24 @@ void Foam::BemNearField<CloudType>::gatherParcels
         myS[i] = p.semiAxes();
         myQ[i] = p.q();
         myK[i] = p.epsilonR();
-        myId[2*i] = p.origProc();
-        myId[2*i + 1] = p.origId();
+        myId[i] = labelPair(p.origProc(), p.origId());
+        myKey[i] = idKey(p.origProc(), p.origId());
         ++i;
     }
-    // Only the parcels in or near clusters enter the cluster solves: those
-    // of every processor are gathered (each processor marks its own from
-    // a halo), the others stay where they are
-    const boolList needed(nearClusters(myX, myR, myS, myK, kappa0, gp.dMax));
+    // Only the parcels in or near clusters enter the cluster solves: each
+    // processor marks its own from a halo, and the solvers receive those
+    // within reach of their boxes (a second halo, of those only)
+    scalarField myClusterKey;
+    labelList mySolver;
+    scalar reach = 0;
+    const boolList needed
+    (
+        nearClusters
+        (
+            myX, myR, myS, myK, myKey, kappa0, gp.dMax,
+            myClusterKey, mySolver, reach
+        )
+    );
     DynamicList<label> sel;
     forAll(needed, k)
     {
@@ -811,26 +919,48 @@ void Foam::BemNearField<CloudType>::gatherParcels
         }
     }
     gp.sel.transfer(sel);
-    labelList selIds(2*gp.sel.size());
-    forAll(gp.sel, k)
+    gp.halo.reset
+    (
+        new processorHalo
+        (
+            processorHalo::processorBoxes(cloud.mesh()),
+            gp.own(myX),
+            // the halo takes points within the range of a box: a margin
+            // for round-off at its edge
+            reach*(1 + 1e-9) + SMALL
+        )
+    );
+    const processorHalo& halo = *gp.halo;
+    gp.x = halo.points();
+    gp.R = gp.own(myR);
+    gp.S = gp.own(myS);
+    gp.q = gp.own(myQ);
+    gp.K = gp.own(myK);
+    gp.clusterKey = gp.own(myClusterKey);
+    gp.solver = gp.own(mySolver);
+    List<labelPair> ids(UIndirectList<labelPair>(myId, gp.sel));
+    halo.gather(gp.R);
+    halo.gather(gp.S);
+    halo.gather(gp.q);
+    halo.gather(gp.K);
+    halo.gather(gp.clusterKey);
+    halo.gather(gp.solver);
+    halo.gather(ids);
+    gp.ids.setSize(2*ids.size());
+    forAll(ids, k)
     {
-        selIds[2*k] = myId[2*gp.sel[k]];
-        selIds[2*k + 1] = myId[2*gp.sel[k] + 1];
+        gp.ids[2*k] = ids[k].first();
+        gp.ids[2*k + 1] = ids[k].second();
     }
-    label start = 0;
-    gp.x = this->gatherAll(gp.own(myX), gp.myStart);
-    gp.R = this->gatherAll(gp.own(myR), start);
-    gp.S = this->gatherAll(gp.own(myS), start);
-    gp.q = this->gatherAll(gp.own(myQ), start);
-    gp.K = this->gatherAll(gp.own(myK), start);
-    gp.ids = this->gatherAll(selIds, start);
-    stats_.nGathered = gp.x.size();
+    stats_.nGathered = returnReduce(gp.sel.size(), sumOp<label>());
+    stats_.nCopies =
+        returnReduce(halo.size() - halo.nLocal(), sumOp<label>());
     stats_.nParcels = returnReduce(n, sumOp<label>());
     gp.gathered.setSize(n);
     gp.gathered = -1;
     forAll(gp.sel, k)
     {
-        gp.gathered[gp.sel[k]] = gp.myStart + k;
+        gp.gathered[gp.sel[k]] = k;
     }
     gp.order = this->idOrder(gp.ids);
     gp.rank.setSize(gp.x.size());
@@ -858,16 +988,14 @@ void Foam::BemNearField<CloudType>::formClusters
     const scalarField& K = gp.K;
     const labelList& rank = gp.rank;
 
-    // Close pairs (centre-line gap below the threshold), clusters by
-    // union-find over the sorted order (so that roots do not depend on
-    // the decomposition)
+    // The nearest linked neighbour of each parcel and its gap (a linked
+    // pair is in one cluster: the members of the clusters solved here
+    // have all their partners among the gathered parcels)
     scalar rCut = 0;
     for (label k = 0; k < N; ++k)
     {
         rCut = max(rCut, cmptMax(S[k])*(2 + clusterGap_));
     }
-    labelList parent(identity(N));
-    // Nearest linked neighbour of each parcel and its gap
     labelList& nearest = cs.nearest;
     scalarField& nearestGap = cs.nearestGap;
     nearest.setSize(N);
@@ -889,9 +1017,6 @@ void Foam::BemNearField<CloudType>::formClusters
                 const scalar aMin = min(cmptMin(S[a]), cmptMin(S[b]));
                 if (g < clusterGap_*aMin)
                 {
-                    const label ra = root(parent, rank[a]);
-                    const label rb = root(parent, rank[b]);
-                    parent[max(ra, rb)] = min(ra, rb);
                     if (g < nearestGap[a] || (g == nearestGap[a] && rank[b] < rank[nearest[a]]))
                     {
                         nearestGap[a] = g;
@@ -907,31 +1032,54 @@ void Foam::BemNearField<CloudType>::formClusters
         );
     }
 
-    // Clusters: members (gathered indices) in sorted order, by root,
-    // numbered in their sorted order; the cluster of each gathered parcel
-    // (-1: none)
-    std::map<label, DynamicList<label>> byRoot;
+    // Clusters by key (the smallest member id: their sorted order), the
+    // members in sorted order; those solved here first, then one index
+    // for each cluster solved elsewhere
+    std::map<scalar, DynamicList<label>> mine;
+    std::map<scalar, label> elsewhere;
     for (label k = 0; k < N; ++k)
     {
         const label g = gp.order[k];
-        if (nearest[g] >= 0)
+        if (gp.clusterKey[g] < 0)
         {
-            byRoot[root(parent, k)].append(g);
+            continue;
+        }
+        if (gp.solver[g] == Pstream::myProcNo())
+        {
+            mine[gp.clusterKey[g]].append(g);
+        }
+        else
+        {
+            elsewhere.emplace(gp.clusterKey[g], 0);
         }
     }
     cs.members.clear();
-    cs.clusters.setSize(byRoot.size());
+    cs.clusters.setSize(mine.size());
     cs.clusterOf.setSize(N);
     cs.clusterOf = -1;
     label c = 0;
-    for (auto& entry : byRoot)
+    for (auto& entry : mine)
     {
         for (const label g : entry.second)
         {
-            cs.members.insert(gp.id(g));
             cs.clusterOf[g] = c;
         }
         cs.clusters[c++].transfer(entry.second);
+    }
+    for (auto& entry : elsewhere)
+    {
+        entry.second = c++;
+    }
+    for (label g = 0; g < N; ++g)
+    {
+        if (gp.clusterKey[g] >= 0)
+        {
+            cs.members.insert(gp.id(g));
+            if (cs.clusterOf[g] < 0)
+            {
+                cs.clusterOf[g] = elsewhere.at(gp.clusterKey[g]);
+            }
+        }
     }
 }
 
@@ -961,29 +1109,47 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
     cs.multipoles.setSize(N);
     cs.Qfree.setSize(N);
     cs.Qfree = Zero;
-    if (!multipoleNeighbours_ || !nC)
+    if (!multipoleNeighbours_)
     {
         return;
     }
-    std::vector<std::set<label>> near(nC);
-    forPairsWithinCutoff
-    (
-        x, x, this->rNearFor(gp.dMax), 0,
-        [&](const label a, const label b, const vector&, const scalar)
+
+    // The members' last moments, from their homes
+    DynamicList<labelPair> memberIds;
+    forAll(clusterOf, g)
+    {
+        if (clusterOf[g] >= 0)
         {
-            if (a < b && clusterOf[a] != clusterOf[b])
+            memberIds.append(gp.id(g));
+        }
+    }
+    const momentsMap last
+    (
+        bemNearFieldDetail::fetchFromHomes(lastMoments_, memberIds, homeOf)
+    );
+
+    std::vector<std::set<label>> near(nC);
+    if (nC)
+    {
+        forPairsWithinCutoff
+        (
+            x, x, this->rNearFor(gp.dMax), 0,
+            [&](const label a, const label b, const vector&, const scalar)
             {
-                if (clusterOf[a] >= 0)
+                if (a < b && clusterOf[a] != clusterOf[b])
                 {
-                    near[clusterOf[a]].insert(gp.rank[b]);
-                }
-                if (clusterOf[b] >= 0)
-                {
-                    near[clusterOf[b]].insert(gp.rank[a]);
+                    if (clusterOf[a] >= 0 && clusterOf[a] < nC)
+                    {
+                        near[clusterOf[a]].insert(gp.rank[b]);
+                    }
+                    if (clusterOf[b] >= 0 && clusterOf[b] < nC)
+                    {
+                        near[clusterOf[b]].insert(gp.rank[a]);
+                    }
                 }
             }
-        }
-    );
+        );
+    }
     for (label c = 0; c < nC; ++c)
     {
         for (const label r : near[c])
@@ -997,14 +1163,12 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
         m.x0 = x[g];
         m.q = gp.q[g];
         cs.Qfree[g] = gp.q[g]*transform(R[g], unitQuadrupole(gp.S[g]));
-        const auto last =
-            clusterOf[g] < 0
-          ? lastMoments_.end()
-          : lastMoments_.find(gp.id(g));
-        if (last != lastMoments_.end())
+        const auto iter =
+            clusterOf[g] < 0 ? last.end() : last.find(gp.id(g));
+        if (iter != last.end())
         {
-            m.p = R[g] & last->second.first;
-            m.Q = transform(R[g], last->second.second);
+            m.p = R[g] & iter->second.first;
+            m.Q = transform(R[g], iter->second.second);
         }
         else
         {
@@ -1013,7 +1177,8 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
     }
 
     // The members' dipoles and quadrupoles at the other parcels near
-    // their clusters (their charges are the far field's)
+    // their clusters (their charges are the far field's), summed to the
+    // parcels' processors
     const scalar kC = gp.kC;
     vectorField Emembers(N, Zero);
     for (label c = 0; c < nC; ++c)
@@ -1031,6 +1196,7 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
             }
         }
     }
+    gp.halo->sumToOwners(Emembers);
     label i = 0;
     for (auto& p : this->owner())
     {
@@ -1514,14 +1680,14 @@ Foam::vectorField Foam::BemNearField<CloudType>::gatherFields
     // isolated dipoles; the isolated parcels' induced dipoles into their
     // multipoles
     const CloudType& cloud = this->owner();
-    label start = 0;
     vectorField myE(cloud.size());
     label i = 0;
     for (const auto& p : cloud)
     {
         myE[i++] = p.E();
     }
-    vectorField E(this->gatherAll(gp.own(myE), start));
+    vectorField E(gp.own(myE));
+    gp.halo->gather(E);
     if (multipoleNeighbours_)
     {
         i = 0;
@@ -1529,7 +1695,8 @@ Foam::vectorField Foam::BemNearField<CloudType>::gatherFields
         {
             myE[i++] = p.dipole();
         }
-        const vectorField Pd(this->gatherAll(gp.own(myE), start));
+        vectorField Pd(gp.own(myE));
+        gp.halo->gather(Pd);
         forAll(cs.multipoles, g)
         {
             if (cs.clusterOf[g] < 0)
@@ -1552,12 +1719,11 @@ void Foam::BemNearField<CloudType>::solveClusters
     clusterResults& res
 )
 {
-    // Each cluster is solved by one processor, round-robin in the sorted
-    // order (every processor holds the whole cluster's inputs, so the
-    // result does not depend on which one); results by gathered index.
-    // The last bound charge of the members of the clusters this processor
-    // solves comes from their homes. Isolated parcels' dipoles enter as
-    // pair terms within the dipole solve's radius
+    // The clusters of this processor (each cluster's inputs are in the
+    // order of the parcels' ids, so the result does not depend on which
+    // processor solves it); results by gathered index. The last bound
+    // charge of the members comes from their homes. Isolated parcels'
+    // dipoles enter as pair terms within the dipole solve's radius
     const scalar rDipole2 =
         (isolated_ == "inducedDipole" && this->nPolarisable())
       ? sqr(this->rNear()) : -1;
@@ -1570,54 +1736,49 @@ void Foam::BemNearField<CloudType>::solveClusters
     forAll(cs.clusters, c)
     {
         stats_.maxClusterSize = max(stats_.maxClusterSize, cs.clusters[c].size());
-        if (c % Pstream::nProcs() == Pstream::myProcNo())
+        for (const label g : cs.clusters[c])
         {
-            for (const label g : cs.clusters[c])
-            {
-                mine.append(gp.id(g));
-            }
+            mine.append(gp.id(g));
         }
     }
-    const boundChargeMap known(fetchBoundCharge(mine));
+    const boundChargeMap known
+    (
+        bemNearFieldDetail::fetchFromHomes(lastSigmaB_, mine, homeOf)
+    );
     const bool solveNow =
         this->owner().db().time().timeIndex() % solveInterval_ == 0;
     forAll(cs.clusters, c)
     {
-        if (c % Pstream::nProcs() == Pstream::myProcNo())
-        {
-            solveCluster
-            (
-                gp, cs, c, known, E, rDipole2, solveNow, farField, res
-            );
-        }
+        solveCluster(gp, cs, c, known, E, rDipole2, solveNow, farField, res);
     }
 }
 
 
 template<class CloudType>
-void Foam::BemNearField<CloudType>::shareResults(clusterResults& res)
+void Foam::BemNearField<CloudType>::shareResults
+(
+    const gatheredParcels& gp,
+    clusterResults& res
+)
 {
-    if (Pstream::parRun())
+    // Every entry of F, M, P is set by one processor and zero on the
+    // others' copies: those sums are exact; a neighbour's reactions from
+    // clusters solved on several processors add up
+    for (vectorField* f : {&res.F, &res.M, &res.P, &res.Fout, &res.Mout})
     {
-        // Every entry is set by one processor and zero elsewhere: the sums
-        // are exact
-        for (vectorField* f : {&res.F, &res.M, &res.P, &res.Fout, &res.Mout})
-        {
-            Pstream::listCombineGather(*f, plusEqOp<vector>());
-            Pstream::listCombineScatter(*f);
-        }
-        reduce(stats_.gmresIterations, sumOp<label>());
-        reduce(stats_.gmresResidual, maxOp<scalar>());
-        reduce(stats_.energy, sumOp<scalar>());
-        reduce(stats_.nSolved, sumOp<label>());
-        reduce(res.remeshDelta, sumOp<scalar>());
-        bemNearFieldDetail::allGatherEntries(res.moments);
+        gp.halo->sumToOwners(*f);
     }
+    reduce(stats_.maxClusterSize, maxOp<label>());
+    reduce(stats_.gmresIterations, sumOp<label>());
+    reduce(stats_.gmresResidual, maxOp<scalar>());
+    reduce(stats_.energy, sumOp<scalar>());
+    reduce(stats_.nSolved, sumOp<label>());
+    reduce(res.remeshDelta, sumOp<scalar>());
     remeshOffset_ += res.remeshDelta;
     gmresIterationsTotal_ += stats_.gmresIterations;
-    storeBoundCharge(res.sigmaB);
+    bemNearFieldDetail::storeAtHomes(res.sigmaB, lastSigmaB_, homeOf);
     usedMoments_.swap(lastMoments_);
-    lastMoments_.swap(res.moments);
+    bemNearFieldDetail::storeAtHomes(res.moments, lastMoments_, homeOf);
 }
 
 
@@ -1625,7 +1786,6 @@ template<class CloudType>
 void Foam::BemNearField<CloudType>::applyResults
 (
     const gatheredParcels& gp,
-    const clusterSet& cs,
     const clusterResults& res
 )
 {
@@ -1635,7 +1795,7 @@ void Foam::BemNearField<CloudType>::applyResults
     for (auto& p : this->owner())
     {
         const label g = gp.gathered[i++];
-        if (cs.members.found(labelPair(p.origProc(), p.origId())))
+        if (g >= 0 && gp.clusterKey[g] >= 0)
         {
             const bool inContact =
                 w != 1 && p.collisionRecords().pairRecords().size();
@@ -1706,15 +1866,20 @@ void Foam::BemNearField<CloudType>::correct
         }
     }
 
-    stats_.nClusters = cs.clusters.size();
-    stats_.nInClusters = cs.members.size();
+    stats_.nClusters = returnReduce(cs.clusters.size(), sumOp<label>());
+    stats_.nInClusters = 0;
+    forAll(gp.sel, k)
+    {
+        stats_.nInClusters += gp.clusterKey[k] >= 0;
+    }
+    reduce(stats_.nInClusters, sumOp<label>());
     stats_.maxClusterSize = 0;
     stats_.gmresIterations = 0;
     stats_.gmresResidual = 0;
     stats_.energy = 0;
     stats_.nSolved = 0;
     stats_.nInContact = 0;
-    if (cs.clusters.empty())
+    if (!stats_.nClusters)
     {
         trimCache();
         lastSigmaB_.clear();
@@ -1730,7 +1895,7 @@ void Foam::BemNearField<CloudType>::correct
     const vectorField E(gatherFields(gp, cs));
     clusterResults res;
     solveClusters(gp, cs, E, farField, res);
-    shareResults(res);
+    shareResults(gp, res);
     trimCache();
     reduce(stats_.nShapes, maxOp<label>());
     reduce(stats_.cacheBytes, maxOp<scalar>());
@@ -1738,7 +1903,7 @@ void Foam::BemNearField<CloudType>::correct
     {
         writeState();
     }
-    applyResults(gp, cs, res);
+    applyResults(gp, res);
     clusterTime_ += timer.cpuTimeIncrement();
 }
 
@@ -1763,8 +1928,13 @@ void Foam::BemNearField<CloudType>::info() const
             << stats_.nInContact << nl;
     }
     Info<< "    BEM parcels in or near clusters = " << stats_.nGathered
-        << " of " << stats_.nParcels << " (gathered on every processor)"
-        << nl;
+        << " of " << stats_.nParcels;
+    if (Pstream::parRun())
+    {
+        Info<< " (" << stats_.nCopies << " halo copies on other"
+            << " processors)";
+    }
+    Info<< nl;
     Info<< "    BEM remeshing energy carried    = " << remeshOffset_ << nl;
     Info<< "    CPU time [s] since start        = dipoles " << dipoleTime_
         << ", BEM clusters " << clusterTime_ << " (set-up of meshes and"
