@@ -540,14 +540,13 @@ void Foam::meshPoisson::shapeAt
 
 void Foam::meshPoisson::collectWallFaces()
 {
-    // All processors hold every wall face (centre, outward unit normal,
-    // circumradius, image sign), so they all find the same images
+    // This processor's wall faces (centre, outward unit normal,
+    // circumradius, image sign) and their points
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const pointField& pts = mesh_.points();
-    DynamicList<point> c, facePts;
-    DynamicList<vector> n;
+    DynamicList<point> c, pointCentre, facePts;
+    DynamicList<vector> n, pointNormal;
     DynamicList<scalar> r, sign;
-    DynamicList<label> nFacePts;
     // Per patch fixing the potential: its first face's index here
     labelList fixedWallStart(pbm.size(), -1);
     forAll(pbm, patchi)
@@ -574,72 +573,45 @@ void Foam::meshPoisson::collectWallFaces()
         {
             const face& f = pp[i];
             const point fc(pp.faceCentres()[i]);
+            const vector fn(normalised(pp.faceAreas()[i]));
             scalar rf = 0;
             for (const label pi : f)
             {
                 rf = max(rf, mag(pts[pi] - fc));
                 facePts.append(pts[pi]);
+                pointCentre.append(fc);
+                pointNormal.append(fn);
             }
-            nFacePts.append(f.size());
             c.append(fc);
-            n.append(normalised(pp.faceAreas()[i]));
+            n.append(fn);
             r.append(rf);
             sign.append(sgn);
         }
     }
-    List<pointField> allC(Pstream::nProcs());
-    List<vectorField> allN(Pstream::nProcs());
-    List<scalarField> allR(Pstream::nProcs()), allS(Pstream::nProcs());
-    allC[Pstream::myProcNo()] = c;
-    allN[Pstream::myProcNo()] = n;
-    allR[Pstream::myProcNo()] = r;
-    allS[Pstream::myProcNo()] = sign;
-    List<pointField> allP(Pstream::nProcs());
-    List<labelList> allNP(Pstream::nProcs());
-    allP[Pstream::myProcNo()] = facePts;
-    allNP[Pstream::myProcNo()] = nFacePts;
-    Pstream::gatherList(allP);
-    Pstream::scatterList(allP);
-    Pstream::gatherList(allNP);
-    Pstream::scatterList(allNP);
-    Pstream::gatherList(allC);
-    Pstream::scatterList(allC);
-    Pstream::gatherList(allN);
-    Pstream::scatterList(allN);
-    Pstream::gatherList(allR);
-    Pstream::scatterList(allR);
-    Pstream::gatherList(allS);
-    Pstream::scatterList(allS);
-    wallC_ = ListListOps::combine<pointField>(allC, accessOp<pointField>());
-    wallN_ = ListListOps::combine<vectorField>(allN, accessOp<vectorField>());
-    wallR_ = ListListOps::combine<scalarField>(allR, accessOp<scalarField>());
-    wallSign_ =
-        ListListOps::combine<scalarField>(allS, accessOp<scalarField>());
-    wallRMax_ = wallR_.size() ? max(wallR_) : 0;
+    wallC_.transfer(c);
+    wallN_.transfer(n);
+    wallR_.transfer(r);
+    wallSign_.transfer(sign);
+    wallRMax_ = returnReduce(wallR_.size() ? max(wallR_) : 0, maxOp<scalar>());
 
-    const labelList nPts
-    (
-        ListListOps::combine<labelList>(allNP, accessOp<labelList>())
-    );
-    labelList pointStart(nPts.size() + 1, 0);
-    forAll(nPts, f)
+    // The wall's surface over this processor's faces, from their points
+    // and the other processors' within the fit's reach (a halo of the
+    // points, each at its face's centre)
+    const List<boundBox>& boxes = processorHalo::processorBoxes(mesh_);
     {
-        pointStart[f + 1] = pointStart[f] + nPts[f];
+        const processorHalo pointHalo
+        (
+            boxes, pointCentre, 2.5*wallRMax_*(1 + 1e-9) + VSMALL
+        );
+        pointField points(facePts);
+        vectorField normals(pointNormal);
+        pointHalo.gather(points);
+        pointHalo.gather(normals);
+        fitWallSurfaces(pointHalo.points(), normals, points);
     }
-    fitWallSurfaces
-    (
-        ListListOps::combine<pointField>(allP, accessOp<pointField>()),
-        pointStart
-    );
 
     // Fixed potentials on the wall's surface: the scale of each face's
-    // coefficients from its surface height (its index among all
-    // processors' wall faces: this processor's follow the lower ones')
-    label offset = 0;
-    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
-    {
-        offset += allC[proci].size();
-    }
+    // coefficients from its surface height
     wallCoeffScale_.setSize(pbm.size());
     forAll(fixedWallStart, patchi)
     {
@@ -655,10 +627,40 @@ void Foam::meshPoisson::collectWallFaces()
             // Planar walls (a fit's round-off) keep their coefficients; a
             // convex wall's surface lies inside the faces (s < 0)
             const scalar d = 1/deltaCoeffs[i];
-            const scalar s = wallSurface_[offset + fixedWallStart[patchi] + i][0];
+            const scalar s = wallSurface_[fixedWallStart[patchi] + i][0];
             scale[i] = mag(s) < 1e-8*d ? 1 : d/(d + max(s, -0.5*d));
         }
     }
+
+    // The faces the images and the self fields' wall planes look up: those
+    // within reach of this processor's box (a halo, with their fits): the
+    // images of charges within 4R of the box in the walls within 2R of
+    // them (addWallImages), the wall plane nearest to a self field's
+    // centre (within 4R) within its patch radius and a cell's circumradius
+    scalar cellRadius = 0;
+    forAll(mesh_.cells(), celli)
+    {
+        for (const label pi : mesh_.cellPoints()[celli])
+        {
+            cellRadius = max(cellRadius, mag(pts[pi] - mesh_.C()[celli]));
+        }
+    }
+    reduce(cellRadius, maxOp<scalar>());
+    const scalar patchReach =
+        selfFieldRadius_ > 0 ? selfFieldPatchRadius() + cellRadius : 0;
+    const processorHalo faceHalo
+    (
+        boxes,
+        wallC_,
+        (4*radius_ + max(2*radius_ + wallRMax_, patchReach))*(1 + 1e-9)
+      + VSMALL
+    );
+    wallC_ = faceHalo.points();
+    faceHalo.gather(wallN_);
+    faceHalo.gather(wallR_);
+    faceHalo.gather(wallSign_);
+    faceHalo.gather(wallSurface_);
+    nWallFaces_ = returnReduce(faceHalo.nLocal(), sumOp<label>());
 }
 
 
@@ -691,8 +693,9 @@ void Foam::meshPoisson::wallFrame
 
 void Foam::meshPoisson::fitWallSurfaces
 (
-    const UList<point>& points,
-    const labelUList& pointStart
+    const UList<point>& pointCentres,
+    const UList<vector>& pointNormals,
+    const UList<point>& points
 )
 {
     // The mesh's wall faces are chords of the user's wall (their points lie
@@ -707,19 +710,21 @@ void Foam::meshPoisson::fitWallSurfaces
     // lone face) keep the face's plane
     const scalar oneWallCos = Foam::cos(0.25*constant::mathematical::pi);
     wallSurface_.setSize(wallC_.size());
+    // The points of the faces around each face (each point at its face's
+    // centre, with its face's normal)
     List<DynamicList<label>> neighbours(wallC_.size());
     forPairsWithinCutoff
     (
-        wallC_, wallC_, 2.5*wallRMax_ + VSMALL, -1,
-        [&](const label t, const label g, const vector& r, const scalar r2)
+        wallC_, pointCentres, 2.5*wallRMax_ + VSMALL, -1,
+        [&](const label t, const label k, const vector& r, const scalar r2)
         {
             if
             (
                 r2 < sqr(2.5*wallR_[t])
-             && (wallN_[t] & wallN_[g]) > oneWallCos
+             && (wallN_[t] & pointNormals[k]) > oneWallCos
             )
             {
-                neighbours[t].append(g);
+                neighbours[t].append(k);
             }
         }
     );
@@ -730,11 +735,7 @@ void Foam::meshPoisson::fitWallSurfaces
         vector eu, ev;
         wallFrame(f, eu, ev);
         const scalar L = wallR_[f];
-        label m = 0;
-        for (const label g : neighbours[f])
-        {
-            m += pointStart[g + 1] - pointStart[g];
-        }
+        const label m = neighbours[f].size();
         if (m < 6 || !(L > 0))
         {
             continue;
@@ -743,17 +744,14 @@ void Foam::meshPoisson::fitWallSurfaces
         Eigen::MatrixXd A(m, 6);
         Eigen::VectorXd h(m);
         label row = 0;
-        for (const label g : neighbours[f])
+        for (const label k : neighbours[f])
         {
-            for (label k = pointStart[g]; k < pointStart[g + 1]; ++k)
-            {
-                const vector r((points[k] - wallC_[f])/L);
-                const scalar u = r & eu;
-                const scalar v = r & ev;
-                A.row(row) << 1, u, v, u*u, u*v, v*v;
-                h(row) = r & wallN_[f];
-                ++row;
-            }
+            const vector r((points[k] - wallC_[f])/L);
+            const scalar u = r & eu;
+            const scalar v = r & ev;
+            A.row(row) << 1, u, v, u*u, u*v, v*v;
+            h(row) = r & wallN_[f];
+            ++row;
         }
         Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
         qr.setThreshold(1e-6);
@@ -1775,6 +1773,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     shapeFresh_(false),
     farValid_(false),
     wallRMax_(0),
+    nWallFaces_(0),
     nRealSources_(-1),
     binOrigin_(Zero),
     binSize_(1),
@@ -1829,7 +1828,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         << radius_ << " m";
     if (correction_ == correctionType::shaped)
     {
-        Info<< ", images in " << wallC_.size() << " wall faces";
+        Info<< ", images in " << nWallFaces_ << " wall faces";
         if (selfFieldRadius_ > 0)
         {
             Info<< ", self field removed at the "
