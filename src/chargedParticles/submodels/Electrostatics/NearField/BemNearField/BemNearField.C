@@ -145,42 +145,43 @@ void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
     }
 }
 
-//- Of a store kept at homes (each entry on the processor home(id)), the
-//  entries of the given ids: asked of their homes, point to point.
-//  Collective
-template<class First, class Second, class Home>
-std::map<labelPair, std::pair<First, Second>> fetchFromHomes
+//- Of a store of entries by parcel id, each kept by one processor (the
+//  one that solved it last), the entries of the given ids: this
+//  processor's, and the rest asked of the processors procs (those near:
+//  a cluster's last solver was near it). Collective
+template<class First, class Second>
+std::map<labelPair, std::pair<First, Second>> fetchHeld
 (
     const std::map<labelPair, std::pair<First, Second>>& store,
     const UList<labelPair>& wanted,
-    const Home& home
+    const labelUList& procs
 )
 {
     std::map<labelPair, std::pair<First, Second>> found;
-    if (!Pstream::parRun())
-    {
-        for (const labelPair& id : wanted)
-        {
-            const auto iter = store.find(id);
-            if (iter != store.end())
-            {
-                found.insert(*iter);
-            }
-        }
-        return found;
-    }
-    List<DynamicList<labelPair>> asked(Pstream::nProcs());
+    DynamicList<labelPair> missing;
     for (const labelPair& id : wanted)
     {
-        asked[home(id)].append(id);
+        const auto iter = store.find(id);
+        if (iter != store.end())
+        {
+            found.insert(*iter);
+        }
+        else
+        {
+            missing.append(id);
+        }
+    }
+    if (!Pstream::parRun())
+    {
+        return found;
     }
     PstreamBuffers questions(Pstream::commsTypes::nonBlocking);
-    forAll(asked, proci)
+    if (missing.size())
     {
-        if (asked[proci].size())
+        for (const label proci : procs)
         {
             UOPstream os(proci, questions);
-            os << List<labelPair>(asked[proci]);
+            os << List<labelPair>(missing);
         }
     }
     labelList sizes;
@@ -207,9 +208,12 @@ std::map<labelPair, std::pair<First, Second>> fetchFromHomes
                 seconds.append(iter->second.second);
             }
         }
-        UOPstream os(proci, answers);
-        os  << List<labelPair>(have) << List<First>(firsts)
-            << List<Second>(seconds);
+        if (have.size())
+        {
+            UOPstream os(proci, answers);
+            os  << List<labelPair>(have) << List<First>(firsts)
+                << List<Second>(seconds);
+        }
     }
     answers.finishedSends(sizes);
     forAll(sizes, proci)
@@ -228,63 +232,6 @@ std::map<labelPair, std::pair<First, Second>> fetchFromHomes
         }
     }
     return found;
-}
-
-
-//- The new store kept at homes: each entry of solved (solved by this
-//  processor) sent to its home, point to point. Collective
-template<class First, class Second, class Home>
-void storeAtHomes
-(
-    std::map<labelPair, std::pair<First, Second>>& solved,
-    std::map<labelPair, std::pair<First, Second>>& store,
-    const Home& home
-)
-{
-    if (!Pstream::parRun())
-    {
-        store.swap(solved);
-        return;
-    }
-    const label nProcs = Pstream::nProcs();
-    List<DynamicList<labelPair>> ids(nProcs);
-    List<DynamicList<First>> firsts(nProcs);
-    List<DynamicList<Second>> seconds(nProcs);
-    for (const auto& entry : solved)
-    {
-        const label h = home(entry.first);
-        ids[h].append(entry.first);
-        firsts[h].append(entry.second.first);
-        seconds[h].append(entry.second.second);
-    }
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    forAll(ids, proci)
-    {
-        if (ids[proci].size())
-        {
-            UOPstream os(proci, buffers);
-            os  << List<labelPair>(ids[proci]) << List<First>(firsts[proci])
-                << List<Second>(seconds[proci]);
-        }
-    }
-    labelList sizes;
-    buffers.finishedSends(sizes);
-    store.clear();
-    forAll(sizes, proci)
-    {
-        if (!sizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, buffers);
-        const List<labelPair> got(is);
-        const List<First> gotFirsts(is);
-        const List<Second> gotSeconds(is);
-        forAll(got, k)
-        {
-            store.emplace(got[k], std::make_pair(gotFirsts[k], gotSeconds[k]));
-        }
-    }
 }
 
 } // End namespace bemNearFieldDetail
@@ -436,8 +383,8 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 template<class CloudType>
 void Foam::BemNearField<CloudType>::writeState() const
 {
-    // Every home's members (a restart may decompose differently): the one
-    // all-gather, at write times
+    // Every processor's members (a restart may decompose differently): the
+    // one all-gather, at write times
     boundChargeMap all(lastSigmaB_);
     momentsMap used(usedMoments_);
     if (Pstream::parRun())
@@ -477,15 +424,6 @@ void Foam::BemNearField<CloudType>::writeState() const
     state.add("quadrupoles", quadrupoles);
     state.add("remeshOffset", remeshOffset_);
     this->owner().outputProperties().set("bemNearField", state);
-}
-
-
-template<class CloudType>
-Foam::label Foam::BemNearField<CloudType>::homeOf(const labelPair& id)
-{
-    const uint64_t h =
-        uint64_t(id.first())*2654435761u + uint64_t(id.second())*40503u;
-    return label(h % uint64_t(Pstream::nProcs()));
 }
 
 
@@ -535,10 +473,17 @@ void Foam::BemNearField<CloudType>::readState()
     (
         state.lookupOrDefault("hasMoments", labelList(meshes.size(), 0))
     );
+    // Each processor keeps its own parcels' (the solvers of the first step
+    // ask their neighbours for the rest)
+    typename InducedDipoleNearField<CloudType>::parcelIdSet own;
+    for (const auto& p : this->owner())
+    {
+        own.insert(labelPair(p.origProc(), p.origId()));
+    }
     forAll(meshes, k)
     {
         const labelPair id(ids[2*k], ids[2*k + 1]);
-        if (homeOf(id) == Pstream::myProcNo())
+        if (own.found(id))
         {
             lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
             if (hasMoments[k])
@@ -931,6 +876,21 @@ void Foam::BemNearField<CloudType>::gatherParcels
         )
     );
     const processorHalo& halo = *gp.halo;
+    // The processors near this one: a cluster solved here was last solved
+    // by one of them (its smallest member then in their box)
+    const List<boundBox>& boxes = processorHalo::processorBoxes(cloud.mesh());
+    DynamicList<label> nearProcs;
+    forAll(boxes, proci)
+    {
+        boundBox grown(boxes[proci]);
+        grown.min() -= vector::uniform(2*reach);
+        grown.max() += vector::uniform(2*reach);
+        if (proci != Pstream::myProcNo() && grown.overlaps(boxes[Pstream::myProcNo()]))
+        {
+            nearProcs.append(proci);
+        }
+    }
+    gp.nearProcs.transfer(nearProcs);
     gp.x = halo.points();
     gp.R = gp.own(myR);
     gp.S = gp.own(myS);
@@ -1114,7 +1074,7 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
         return;
     }
 
-    // The members' last moments, from their homes
+    // The members' last moments, from their last solvers
     DynamicList<labelPair> memberIds;
     forAll(clusterOf, g)
     {
@@ -1125,7 +1085,7 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
     }
     const momentsMap last
     (
-        bemNearFieldDetail::fetchFromHomes(lastMoments_, memberIds, homeOf)
+        bemNearFieldDetail::fetchHeld(lastMoments_, memberIds, gp.nearProcs)
     );
 
     std::vector<std::set<label>> near(nC);
@@ -1722,7 +1682,7 @@ void Foam::BemNearField<CloudType>::solveClusters
     // The clusters of this processor (each cluster's inputs are in the
     // order of the parcels' ids, so the result does not depend on which
     // processor solves it); results by gathered index. The last bound
-    // charge of the members comes from their homes. Isolated parcels'
+    // charge of the members comes from their last solvers. Isolated parcels'
     // dipoles enter as pair terms within the dipole solve's radius
     const scalar rDipole2 =
         (isolated_ == "inducedDipole" && this->nPolarisable())
@@ -1743,7 +1703,7 @@ void Foam::BemNearField<CloudType>::solveClusters
     }
     const boundChargeMap known
     (
-        bemNearFieldDetail::fetchFromHomes(lastSigmaB_, mine, homeOf)
+        bemNearFieldDetail::fetchHeld(lastSigmaB_, mine, gp.nearProcs)
     );
     const bool solveNow =
         this->owner().db().time().timeIndex() % solveInterval_ == 0;
@@ -1776,9 +1736,11 @@ void Foam::BemNearField<CloudType>::shareResults
     reduce(res.remeshDelta, sumOp<scalar>());
     remeshOffset_ += res.remeshDelta;
     gmresIterationsTotal_ += stats_.gmresIterations;
-    bemNearFieldDetail::storeAtHomes(res.sigmaB, lastSigmaB_, homeOf);
+    // Each solver keeps what it solved (the next step's solver of a
+    // cluster is most often the same processor)
+    lastSigmaB_.swap(res.sigmaB);
     usedMoments_.swap(lastMoments_);
-    bemNearFieldDetail::storeAtHomes(res.moments, lastMoments_, homeOf);
+    lastMoments_.swap(res.moments);
 }
 
 
