@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "NearFieldModel.H"
-#include "ListListOps.H"
 #include "Pstream.H"
 
 #include <algorithm>
@@ -23,27 +22,6 @@ Foam::NearFieldModel<CloudType>::NearFieldModel
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
-
-template<class CloudType>
-template<class ListType>
-ListType Foam::NearFieldModel<CloudType>::gatherAll
-(
-    const ListType& mine,
-    label& start
-)
-{
-    List<ListType> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = mine;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
-    start = 0;
-    for (label proci = 0; proci < Pstream::myProcNo(); ++proci)
-    {
-        start += all[proci].size();
-    }
-    return ListListOps::combine<ListType>(all, accessOp<ListType>());
-}
-
 
 template<class CloudType>
 Foam::labelList Foam::NearFieldModel<CloudType>::idOrder
