@@ -158,6 +158,18 @@ neighbourCase "$work/neighbours/restart" multipoles
     setEndTime 2e-6
     run solver2 chargedParticleFoam
 ) || fail "bemClusters.neighbours.restart (failed)"
+# The same restart on 2 processors (each member's state kept by the
+# processor that solved it, the state's reader keeping its own parcels')
+# = the uninterrupted 2-processor run
+neighbourCase "$work/neighbours/parallelRestart" multipoles
+(
+    cd "$work/neighbours/parallelRestart" || exit 1
+    setWriteInterval 1
+    run decomposePar decomposePar
+    run solver mpirun -np 2 chargedParticleFoam -parallel
+    setEndTime 2e-6
+    run solver2 mpirun -np 2 chargedParticleFoam -parallel
+) || fail "bemClusters.neighbours.parallelRestart (failed)"
 $PY - "$work/neighbours" "$top" <<'PYEOF'
 import sys
 import numpy as np
@@ -187,6 +199,16 @@ eT = np.abs(ts - tr).max()/np.abs(ts).max()
 ok = abs(t3 - 2e-6) < 1e-12 and np.abs(xs - xr).max() < 1e-12 and eF < 1e-10 and eT < 1e-10
 print("%s: bemClusters.neighbours.restart (second step after a restart vs uninterrupted: force"
       " difference %.1e, torque %.1e; tol 1e-10)" % ("PASS" if ok else "FAIL", eF, eT))
+xr, fr, tr, t4 = last(sys.argv[1] + "/parallelRestart")
+# fp, tp are in the serial run's order (matched above)
+m = np.array([int(np.argmin(np.linalg.norm(xr - x, axis=1))) for x in xs])
+xr, fr, tr = xr[m], fr[m], tr[m]
+eF = np.abs(fp - fr).max()/np.abs(fp).max()
+eT = np.abs(tp - tr).max()/np.abs(tp).max()
+ok = (abs(t4 - 2e-6) < 1e-12 and sorted(m) == list(range(len(xs))) and np.abs(xs - xr).max() < 1e-12
+      and eF < 1e-10 and eT < 1e-10)
+print("%s: bemClusters.neighbours.parallelRestart (second step on 2 processors after a restart vs"
+      " uninterrupted: force difference %.1e, torque %.1e; tol 1e-10)" % ("PASS" if ok else "FAIL", eF, eT))
 PYEOF
 
 # The same scene with 8 more parcels far from every triad, solved every
