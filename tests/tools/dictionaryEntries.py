@@ -142,7 +142,7 @@ REVIEWED = {
              ' names or regular expressions, not entry names'),
     # --- not dictionaries
     ('ImageCoulomb.C', 'patchi'): ([], 'DynamicList<label>::found'),
-    ('BemNearField.C', 'labelPair(p.origProc(), p.origId())'):
+    ('BemNearField.C', 'id'):
         ([], 'a set of parcel ids'),
     ('InducedDipoleNearField.C', 'labelPair(p.origProc(), p.origId())'):
         ([], 'a set of parcel ids'),

@@ -111,10 +111,16 @@ inline label root(labelList& parent, label i)
     return i;
 }
 
-//- Every processor's entries of a map by parcel id on every processor
-//  (an entry's id is held by one processor). Collective
+//- Every processor's entries of a map by parcel id on the master, or on
+//  every processor (toAll); holder: the processor each came from (an
+//  entry's id is held by one processor). Collective
 template<class First, class Second>
-void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
+void gatherEntries
+(
+    std::map<labelPair, std::pair<First, Second>>& m,
+    const bool toAll,
+    std::map<labelPair, label>* holder = nullptr
+)
 {
     const label me = Pstream::myProcNo();
     List<List<labelPair>> ids(Pstream::nProcs());
@@ -127,11 +133,14 @@ void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
         seconds[me].append(entry.second.second);
     }
     Pstream::gatherList(ids);
-    Pstream::scatterList(ids);
     Pstream::gatherList(firsts);
-    Pstream::scatterList(firsts);
     Pstream::gatherList(seconds);
-    Pstream::scatterList(seconds);
+    if (toAll)
+    {
+        Pstream::scatterList(ids);
+        Pstream::scatterList(firsts);
+        Pstream::scatterList(seconds);
+    }
     forAll(ids, proci)
     {
         forAll(ids[proci], k)
@@ -141,9 +150,14 @@ void allGatherEntries(std::map<labelPair, std::pair<First, Second>>& m)
                 ids[proci][k],
                 std::make_pair(firsts[proci][k], seconds[proci][k])
             );
+            if (holder)
+            {
+                (*holder)[ids[proci][k]] = proci;
+            }
         }
     }
 }
+
 
 //- Of a store of entries by parcel id, each kept by one processor (the
 //  one that solved it last), the entries of the given ids: this
@@ -383,15 +397,18 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
 template<class CloudType>
 void Foam::BemNearField<CloudType>::writeState() const
 {
-    // Every processor's members (a restart may decompose differently): the
-    // one all-gather, at write times
+    // Each processor writes the members it holds (solved last) and the
+    // moments they were solved with; the master writes every processor's
+    // (reconstructPar takes the master's uniform files), each with the
+    // processor that holds it, so that a restart on as many processors
+    // gives each its own back and any decomposition finds its parcels'
+    // state. The moments (a few numbers a member) are gathered on every
+    // processor, the bound charge on the master only
     boundChargeMap all(lastSigmaB_);
     momentsMap used(usedMoments_);
-    if (Pstream::parRun())
-    {
-        bemNearFieldDetail::allGatherEntries(all);
-        bemNearFieldDetail::allGatherEntries(used);
-    }
+    std::map<labelPair, label> holder;
+    bemNearFieldDetail::gatherEntries(all, false, &holder);
+    bemNearFieldDetail::gatherEntries(used, true);
 
     labelList ids(2*all.size());
     List<meshKey> meshes(all.size());
@@ -399,9 +416,11 @@ void Foam::BemNearField<CloudType>::writeState() const
     vectorField dipoles(all.size(), Zero);
     symmTensorField quadrupoles(all.size(), Zero);
     labelList hasMoments(all.size(), 0);
+    labelList holders(all.size());
     label k = 0;
     for (const auto& entry : all)
     {
+        holders[k] = holder.at(entry.first);
         ids[2*k] = entry.first.first();
         ids[2*k + 1] = entry.first.second();
         meshes[k] = entry.second.first;
@@ -422,6 +441,8 @@ void Foam::BemNearField<CloudType>::writeState() const
     state.add("hasMoments", hasMoments);
     state.add("dipoles", dipoles);
     state.add("quadrupoles", quadrupoles);
+    state.add("holders", holders);
+    state.add("nProcs", Pstream::nProcs());
     state.add("remeshOffset", remeshOffset_);
     this->owner().outputProperties().set("bemNearField", state);
 }
@@ -473,8 +494,15 @@ void Foam::BemNearField<CloudType>::readState()
     (
         state.lookupOrDefault("hasMoments", labelList(meshes.size(), 0))
     );
-    // Each processor keeps its own parcels' (the solvers of the first step
-    // ask their neighbours for the rest)
+    const label nProcsWritten =
+        state.template lookupOrDefault<label>("nProcs", -1);
+    const labelList holders
+    (
+        state.lookupOrDefault("holders", labelList(meshes.size(), -1))
+    );
+    // Each processor keeps what it held when the state was written (on
+    // as many processors) and its own parcels' (the solvers of the first
+    // step ask the processors near them for the rest)
     typename InducedDipoleNearField<CloudType>::parcelIdSet own;
     for (const auto& p : this->owner())
     {
@@ -483,7 +511,14 @@ void Foam::BemNearField<CloudType>::readState()
     forAll(meshes, k)
     {
         const labelPair id(ids[2*k], ids[2*k + 1]);
-        if (own.found(id))
+        if
+        (
+            own.found(id)
+         || (
+                nProcsWritten == Pstream::nProcs()
+             && holders[k] == Pstream::myProcNo()
+            )
+        )
         {
             lastSigmaB_.emplace(id, std::make_pair(meshes[k], sigmaB[k]));
             if (hasMoments[k])
