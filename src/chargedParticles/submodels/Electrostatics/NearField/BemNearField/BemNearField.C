@@ -716,21 +716,26 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
 
     // Members: a close partner (the test of formClusters); the links seen
     // here (a link across processors is seen by both: each end lies in
-    // the other's halo)
+    // the other's halo; the gap is computed with the pair in id order, so
+    // that both decide alike to the last bit)
     DynamicList<labelPair> links;
     if (rCut > 0)
     {
         forPairsWithinCutoff
         (
             xh, xh, rCut, 0,
-            [&](const label a, const label b, const vector& r, const scalar r2)
+            [&](const label a, const label b, const vector&, const scalar r2)
             {
                 if (a >= b || (Kh[a] == kappa0 && Kh[b] == kappa0))
                 {
                     return;
                 }
-                const scalar g =
-                    centreLineGap(Sh[a], Rh[a], Sh[b], Rh[b], r, r2);
+                const label i = keyh[a] < keyh[b] ? a : b;
+                const label j = i == a ? b : a;
+                const scalar g = centreLineGap
+                (
+                    Sh[i], Rh[i], Sh[j], Rh[j], xh[i] - xh[j], r2
+                );
                 if (g < clusterGap_*min(cmptMin(Sh[a]), cmptMin(Sh[b])))
                 {
                     links.append(labelPair(a, b));
@@ -1002,13 +1007,18 @@ void Foam::BemNearField<CloudType>::formClusters
         forPairsWithinCutoff
         (
             x, x, rCut, 0,
-            [&](const label a, const label b, const vector& r, const scalar r2)
+            [&](const label a, const label b, const vector&, const scalar r2)
             {
                 if (a >= b || (K[a] == kappa0 && K[b] == kappa0))
                 {
                     return;
                 }
-                const scalar g = centreLineGap(S[a], R[a], S[b], R[b], r, r2);
+                // In id order (as nearClusters): the same bits on every
+                // processor
+                const label i = rank[a] < rank[b] ? a : b;
+                const label j = i == a ? b : a;
+                const scalar g =
+                    centreLineGap(S[i], R[i], S[j], R[j], x[i] - x[j], r2);
                 const scalar aMin = min(cmptMin(S[a]), cmptMin(S[b]));
                 if (g < clusterGap_*aMin)
                 {
