@@ -217,7 +217,7 @@ PYEOF
 # (24 of 32, each processor marking its own from a halo, each cluster
 # solved by the processor of its smallest-id member), the far ones keep
 # their point charges and dipoles, the bound charge is carried between
-# solves (kept by its home processor, fetched by the cluster's solver),
+# solves (kept by the processor that solved it, fetched by the next solver),
 # and the runs agree
 for np_ in 1 2 4
 do
