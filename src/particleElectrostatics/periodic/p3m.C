@@ -1201,6 +1201,25 @@ void Foam::p3m::influenceFunction(const bool withPotential) const
 }
 
 
+Foam::label Foam::p3m::realSpaceCells(label nc[3]) const
+{
+    // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
+    // vs 15 % for cells of rc), else rc, else all pairs
+    const scalar rc = p_.rCut;
+    label reach = 2;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nc[d] = label(2*L_[d]/rc);
+        if (nc[d] < 5) reach = 1;
+    }
+    if (reach == 1)
+    {
+        for (direction d = 0; d < 3; ++d) nc[d] = label(L_[d]/rc);
+    }
+    return (nc[0] < 3 || nc[1] < 3 || nc[2] < 3) ? 0 : reach;
+}
+
+
 template<class Visitor, class Result>
 void Foam::p3m::realSpacePairs
 (
@@ -1216,21 +1235,9 @@ void Foam::p3m::realSpacePairs
     const label nKept = nOwn < 0 ? N : nOwn;
     const scalar rc = p_.rCut, rc2 = rc*rc;
 
-    // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
-    // vs 15 % for cells of rc), else rc, else all pairs
     label nc[3];
-    label reach = 2;
-    for (direction d = 0; d < 3; ++d)
-    {
-        nc[d] = label(2*L_[d]/rc);
-        if (nc[d] < 5) reach = 1;
-    }
-    if (reach == 1)
-    {
-        for (direction d = 0; d < 3; ++d) nc[d] = label(L_[d]/rc);
-    }
-
-    if (nc[0] < 3 || nc[1] < 3 || nc[2] < 3)
+    const label reach = realSpaceCells(nc);
+    if (!reach)
     {
         // Few cells: all pairs, minimum image (rc <= L/2 is checked)
         std::vector<label> order(N);
@@ -1294,21 +1301,9 @@ void Foam::p3m::realSpace
     const scalar rc = p_.rCut, rc2 = rc*rc;
     const realSpaceForce pairForce(p_.alpha, rc, p_.fastErfc, tab_);
 
-    // Cells of rc/2 (5^3 stencil: 27 % of the visited volume within rc,
-    // vs 15 % for cells of rc), else rc, else all pairs
     label nc[3];
-    label reach = 2;
-    for (direction d = 0; d < 3; ++d)
-    {
-        nc[d] = label(2*L_[d]/rc);
-        if (nc[d] < 5) reach = 1;
-    }
-    if (reach == 1)
-    {
-        for (direction d = 0; d < 3; ++d) nc[d] = label(L_[d]/rc);
-    }
-
-    if (nc[0] < 3 || nc[1] < 3 || nc[2] < 3)
+    const label reach = realSpaceCells(nc);
+    if (!reach)
     {
         // Few cells: all pairs, minimum image (rc <= L/2 is checked)
         for (label i = 0; i < N; ++i)
