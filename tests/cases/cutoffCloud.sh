@@ -4,7 +4,9 @@
 # serial and on 2 and 4 processors (each receives only its neighbours'
 # parcels within rCut: a halo; 4 in a row, so the processors have different
 # numbers of processor patches), and directCoulomb's for a cutoff beyond the
-# box. The reduced-stiffness head-on collision (Ruan Table 1, chi 0.176)
+# box. In the box made a duct cyclic in x: the sum with the pairs through
+# the cyclic patch (copies at x -+ 1 m), serially and on rings of 2 and 4
+# processors. The reduced-stiffness head-on collision (Ruan Table 1, chi 0.176)
 # with the pair split between 2 processors: the same trajectory as serial
 # (the halo reaches the contact partner).
 . "$(dirname "$0")/common.sh.inc"
@@ -36,6 +38,11 @@ cp -r "$work/cut" "$work/parallel"
 cp -r "$work/cut" "$work/parallel4"
 cp -r "$work/cut" "$work/far"
 cp -r "$work/cut" "$work/direct"
+for c in cyclic cyclicRing2 cyclicRing4
+do
+    cp -r "$work/cut" "$work/$c"
+    $PY "$tools/unitBoxMesh.py" xCyclic "$work/$c"
+done
 sed -i 's/rCut 0.3;/rCut 2;/' "$work/far/constant/cloudProperties"
 sed -i 's/electrostaticsModel cutoffCoulomb;/electrostaticsModel directCoulomb;/' "$work/direct/constant/cloudProperties"
 for c in cut far direct
@@ -55,6 +62,21 @@ run blockMesh blockMesh && run decomposePar decomposePar \
  && run solver mpirun -np 4 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \
     || fail "cutoffCloud.parallel4 (run failed, see $work/parallel4)"
+# The duct cyclic in x: pairs through the cyclic patch (copies of the
+# parcels within rCut of it), serially and on rings of 2 and 4 processors
+# (each with two neighbours, one through the cyclic patch)
+cd "$work/cyclic" || exit 1
+run blockMesh blockMesh && run solver chargedParticleFoam \
+    || fail "cutoffCloud.cyclic (solver failed, see $work/cyclic/log.solver)"
+for np in 2 4
+do
+    cd "$work/cyclicRing$np" || exit 1
+    setDecomposition $np "$np 1 1"
+    run blockMesh blockMesh && run decomposePar decomposePar \
+     && run solver mpirun -np $np chargedParticleFoam -parallel \
+     && run reconstructPar reconstructPar -latestTime \
+        || fail "cutoffCloud.cyclicRing$np (run failed, see $work/cyclicRing$np)"
+done
 
 $PY - "$work" "$top/etc/python" <<'PYEOF'
 import os, sys
@@ -66,13 +88,16 @@ k = 8.9875517923e9
 d = np.loadtxt(work + "/cut/charges.txt")
 x0, q0 = d[:, :3], d[:, 3]
 
-def truncated(rc):
+def truncated(rc, periodX=False):
+    # Every source within rc, with its copies shifted by -1 and +1 m in x
+    # for the duct cyclic in x
     F = np.zeros_like(x0)
     for i in range(len(x0)):
-        r = x0[i] - x0
-        rr = np.linalg.norm(r, axis=1)
-        m = (rr > 0) & (rr < rc)
-        F[i] = k*q0[i]*np.sum((q0[m]/rr[m]**3)[:, None]*r[m], axis=0)
+        for sx in ((-1.0, 0.0, 1.0) if periodX else (0.0,)):
+            r = x0[i] - (x0 + [sx, 0, 0])
+            rr = np.linalg.norm(r, axis=1)
+            m = (rr > 0) & (rr < rc)
+            F[i] += k*q0[i]*np.sum((q0[m]/rr[m]**3)[:, None]*r[m], axis=0)
     return F
 
 def load(case):
@@ -84,18 +109,37 @@ def load(case):
     return idx, f
 
 ref = {"cut": truncated(0.3), "parallel": truncated(0.3),
-       "parallel4": truncated(0.3), "far": None}
+       "parallel4": truncated(0.3), "far": None,
+       "cyclic": truncated(0.3, True), "cyclicRing2": truncated(0.3, True),
+       "cyclicRing4": truncated(0.3, True)}
 idxD, fD = load(work + "/direct")
 direct = np.zeros_like(x0); direct[idxD] = fD
-for name in ("cut", "parallel", "parallel4", "far"):
+for name in ("cut", "parallel", "parallel4", "far", "cyclic", "cyclicRing2", "cyclicRing4"):
     idx, f = load(f"{work}/{name}")
     R = ref[name][idx] if ref[name] is not None else direct[idx]
     err = np.abs(f - R).max()/np.abs(R).max()
     tol = 1e-9 if ref[name] is not None else 1e-12
     what = "a numpy truncated sum (rCut 0.3 m)" if ref[name] is not None else "directCoulomb (rCut 2 m > box)"
+    if name.startswith("cyclic"):
+        # how much the pairs through the cyclic patch weigh: the same sum
+        # without them differs by
+        d = np.abs(truncated(0.3)[idx] - R).max()/np.abs(R).max()
+        what = f"a numpy truncated sum with the copies at x -+ 1 m (rCut 0.3 m; without them {d:.2f})"
     ok = len(set(idx)) == len(x0) and err < tol
     print(f"{'PASS' if ok else 'FAIL'}: cutoffCloud.{name} (fE vs {what}: max rel. difference {err:.1e}, tol {tol:g})")
 PYEOF
+
+# A cutoff beyond the cyclic period: a clear error naming rCut and the range
+rm -rf "$work/cyclicLongCut"
+cp -r "$work/cyclic" "$work/cyclicLongCut"
+rm -rf "$work/cyclicLongCut"/[1-9]* "$work/cyclicLongCut"/0.*
+sed -i 's/rCut 0.3;/rCut 1.5;/' "$work/cyclicLongCut/constant/cloudProperties"
+(cd "$work/cyclicLongCut" && chargedParticleFoam > log.solver 2>&1)
+rc=$?
+msg=$(grep -m1 "Entry rCut" "$work/cyclicLongCut/log.solver")
+[ $rc -ne 0 ] && echo "$msg" | grep -q "exceeds the cyclic period 1 of the mesh: it must be in (0, 1\]" \
+    && pass "cutoffCloud.cyclicLongCut (exit $rc: ${msg## })" \
+    || fail "cutoffCloud.cyclicLongCut (exit $rc, message: $msg)"
 
 # The reduced-stiffness collision (chi 0.176, deltaT 2e-7 s, to 1.1 ms)
 # with cutoffCoulomb rCut 300 um: the two spheres (centres 0 and 250 um)

@@ -4,7 +4,9 @@
 #  - the written forces fE equal an independent numpy truncated image sum
 #    (each axis: no reflection, low or high wall; compositions of the
 #    perpendicular walls) for rCut = 0.1, 0.3, 1 m in serial, and for
-#    rCut = 0.3 m on 2 processors (scotch);
+#    rCut = 0.3 m on 2 processors (simple 2 1 1); the box made a duct
+#    cyclic in x (images in the 4 walls, pairs and images through the
+#    cyclic patch) serially and on a ring of 2 processors;
 #  - the error of the truncated image sum against the exact grounded box
 #    (tests/tools/groundedBox.py, Ewald sum of the image lattice) is printed
 #    for the three cutoffs, with groundedBox.py's own self-test;
@@ -41,15 +43,23 @@ s = re.sub(r"^writeInterval .*?;", "writeInterval 1;", s, flags=re.M)
 open(p, "w").write(s)
 PYEOF
 run blockMesh blockMesh || fail "imageCloud.mesh (blockMesh failed)"
-for c in r0.1 r1 parallel
+for c in r0.1 r1 parallel duct ductRing
 do
     rm -rf "$work/$c"
     cp -r "$work/r0.3" "$work/$c"
 done
+# The duct cyclic in x (walls y and z): images in the four walls, pairs
+# and images through the cyclic patch; serially and on a ring of 2
+for c in duct ductRing
+do
+    $PY "$tools/unitBoxMesh.py" xCyclic "$work/$c"
+    (cd "$work/$c" && rm -rf constant/polyMesh && run blockMesh blockMesh) \
+        || fail "imageCloud.$c (blockMesh failed)"
+done
 sed -i 's/rCut 0.3;/rCut 0.1;/' "$work/r0.1/constant/cloudProperties"
 sed -i 's/rCut 0.3;/rCut 1;/' "$work/r1/constant/cloudProperties"
 # decomposition: simple (2 1 1) as in the tutorial (scotch is not built here)
-for c in r0.1 r0.3 r1
+for c in r0.1 r0.3 r1 duct
 do
     cd "$work/$c" || exit 1
     run solver chargedParticleFoam \
@@ -60,6 +70,11 @@ run decomposePar decomposePar \
  && run solver mpirun -np 2 chargedParticleFoam -parallel \
  && run reconstructPar reconstructPar -latestTime \
     || fail "imageCloud.parallel (run failed, see $work/parallel)"
+cd "$work/ductRing" || exit 1
+run decomposePar decomposePar \
+ && run solver mpirun -np 2 chargedParticleFoam -parallel \
+ && run reconstructPar reconstructPar -latestTime \
+    || fail "imageCloud.ductRing (run failed, see $work/ductRing)"
 grep -q "6 wall planes" "$work/r0.3/log.solver" \
     && pass "imageCloud.planes (patch walls split into 6 planes)" \
     || fail "imageCloud.planes (no '6 wall planes' in $work/r0.3/log.solver)"
@@ -77,16 +92,20 @@ d = np.loadtxt(work + "/r0.3/charges.txt")
 x0, q0 = d[:, :3], d[:, 3]
 N = len(x0)
 
-def truncated(rc, x0):
+def truncated(rc, x0, periodicX=False):
     # Images axis by axis: 0 none, 1 low wall (-x), 2 high wall (2 - x) if
     # that wall is closer than rc; charge (-1)^(reflections); every source
-    # (real or image) counted if closer than rc to the target, self excluded
+    # (real or image) counted if closer than rc to the target, self
+    # excluded. periodicX: no walls in x, the copies at x -+ 1 instead
     F = np.zeros_like(x0)
     for s in range(N):
         for m in np.ndindex(3, 3, 3):
             y, qs, ok = x0[s].copy(), q0[s], True
             for c in range(3):
                 if m[c] == 0:
+                    continue
+                if c == 0 and periodicX:
+                    y[c] += -1 if m[c] == 1 else 1
                     continue
                 dist = x0[s, c] if m[c] == 1 else 1 - x0[s, c]
                 ok &= dist < rc
@@ -115,17 +134,20 @@ def load(case):
 summary = []
 # The written fE is evaluated at the written positions (after the step's
 # move, ~1e-11 m): the references use those
-for name, rc in (("r0.1", 0.1), ("r0.3", 0.3), ("r1", 1.0), ("parallel", 0.3)):
+for name, rc in (("r0.1", 0.1), ("r0.3", 0.3), ("r1", 1.0), ("parallel", 0.3),
+                 ("duct", 0.3), ("ductRing", 0.3)):
     try:
         ok, F, X = load(f"{work}/{name}")
     except Exception as e:
         print(f"FAIL: imageCloud.{name} (cannot read the cloud: {e})")
         continue
-    R = truncated(rc, X)
+    duct = name.startswith("duct")
+    R = truncated(rc, X, duct)
     err = np.abs(F - R).max()/np.abs(R).max() if ok else np.inf
+    what = "the duct cyclic in x: images in 4 walls, copies at x -+ 1 m, " if duct else ""
     print(f"{'PASS' if ok and err < 1e-9 else 'FAIL'}: imageCloud.{name} "
-          f"(fE vs a numpy truncated image sum, rCut {rc} m: max rel. difference {err:.1e}, tol 1e-9)")
-    if name == "parallel":
+          f"(fE vs a numpy truncated image sum, {what}rCut {rc} m: max rel. difference {err:.1e}, tol 1e-9)")
+    if name in ("parallel", "duct", "ductRing"):
         continue
     exact = q0[:, None]*groundedBox.field(X, q0, 1.0)
     rel = np.linalg.norm(F - exact, axis=1)/np.linalg.norm(exact, axis=1)

@@ -157,8 +157,9 @@ PYEOF
 # - periodic (ewald): two prolates across the periodic boundary x = 0 and
 #   the same two shifted by half a box (adjacent, inside): a periodic scene
 #   is translation invariant, so the near field must pair them by the
-#   minimum image (forces and torques equal to the Ewald sum's accuracy).
-history()   # history <case>: fE and tE of the first step, one row per parcel
+#   minimum image (forces and torques equal to the Ewald sum's accuracy);
+# - cutoffCoulomb in a duct cyclic in x (below).
+history()   # history <case>: fE and tE of the first step, one row per parcel (by charge)
 {
     $PY - "$1" <<'PYEOF'
 import glob, sys
@@ -167,6 +168,7 @@ f = sorted(glob.glob(sys.argv[1] + "/postProcessing/lagrangian/cloud/particleHis
 header = open(f).readlines()[1].lstrip("# ").split()
 h = np.loadtxt(f, ndmin=2)
 h = h[h[:, 0] == h[0, 0]]
+h = h[np.argsort(-h[:, header.index("q")], kind="stable")]   # parcels by charge (processors write in turn)
 c = [header.index(k) for k in ("fEx", "fEy", "fEz", "tEx", "tEy", "tEz")]
 np.savetxt(sys.argv[1] + "/forces.txt", h[:, c])
 PYEOF
@@ -227,6 +229,48 @@ done
 check polarisation.periodicPairs "(the near field pairs the prolates across x = 0)" \
     grep -q "2 polarisable, 1 pairs" "$work/periodic-0/log.solver"
 compareForces periodicNearField "$work/periodic-0" "$work/periodic-0.5" 1e-8
+
+# - cutoffCoulomb in a duct cyclic in x (walls y and z): the same two
+#   prolates across the cyclic patch x = 0 and shifted by half the period;
+#   along the duct the scene is translation invariant, so the far field's
+#   pairs and the near field's through the cyclic patch (the parcels'
+#   copies) must give the same forces and torques; and the pair across
+#   x = 0 on a ring of 2 processors (split at x = 0.5) as serially.
+for shift in 0 0.5 ring
+do
+    copyCase twoChargedSpheres "$work/duct-$shift"
+    (
+        cd "$work/duct-$shift" || exit 1
+        $PY "$tools/unitBoxMesh.py" xCyclic
+        $PY - ${shift/ring/0} <<'PYEOF'
+import re, sys
+shift = float(sys.argv[1])
+xs = [(0.95 + shift) % 1.0, (0.05 + shift) % 1.0]
+parcels = "\n".join(
+    "                { position (%.12g %g %g); semiAxes (0.04 0.02 0.02); eulerAngles (%g 20 0); epsilonR 6; rho 1e30; q %g; }"
+    % (x, 0.5 + 0.01*i, 0.5, 30 + 40*i, (1e-9, -2e-9)[i]) for i, x in enumerate(xs))
+p = "constant/cloudProperties"
+s = open(p).read()
+s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
+s = re.sub(r"electrostaticsModel\s+\w+;", "electrostaticsModel cutoffCoulomb;\n    appliedField (0 1e3 0);\n"
+           "    cutoffCoulombCoeffs { rCut 0.3; nearField { type inducedDipole; tolerance 1e-14; } }", s)
+open(p, "w").write(s)
+PYEOF
+        setEndTime 1e-6
+        if [ $shift = ring ]
+        then
+            setDecomposition 2 "2 1 1"
+            run blockMesh blockMesh && run decomposePar decomposePar \
+             && run solver mpirun -np 2 chargedParticleFoam -parallel && history .
+        else
+            run blockMesh blockMesh && run solver chargedParticleFoam && history .
+        fi
+    ) || fail "polarisation.cyclicNearField (run failed, see $work/duct-$shift)"
+done
+check polarisation.cyclicPairs "(the near field pairs the prolates across the cyclic patch)" \
+    grep -q "2 polarisable, 1 pairs" "$work/duct-0/log.solver"
+compareForces cyclicNearField "$work/duct-0" "$work/duct-0.5" 1e-10
+compareForces cyclicNearFieldRing "$work/duct-0" "$work/duct-ring" 1e-10
 
 # meshPoisson: the electrodes give the applied field, the near field adds
 # the dipoles. Two neutral dielectric spheres (radius a, epsilonR 5) on a

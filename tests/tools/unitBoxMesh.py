@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Rewrite system/blockMeshDict of a case copied from a tutorial into a 1 m
 unit cube of 4 x 4 x 4 cells, its faces walls or cyclic pairs (x0/x1,
-y0/y1, z0/z1): the box of several case tests.
+y0/y1, z0/z1), or a duct cyclic in x with walls (xCyclic): the box of
+several case tests.
 
-    unitBoxMesh.py wall|cyclic [caseDir]
+    unitBoxMesh.py wall|cyclic|xCyclic [caseDir]
 """
 import os
 import re
@@ -17,6 +18,9 @@ PATCHES = {
     y1 { type cyclic; neighbourPatch y0; faces ((3 7 6 2)); }
     z0 { type cyclic; neighbourPatch z1; faces ((0 3 2 1)); }
     z1 { type cyclic; neighbourPatch z0; faces ((4 5 6 7)); }""",
+    "xCyclic": """    x0 { type cyclic; neighbourPatch x1; faces ((0 4 7 3)); }
+    x1 { type cyclic; neighbourPatch x0; faces ((1 2 6 5)); }
+    walls { type wall; faces ((0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }""",
 }
 
 

@@ -5,7 +5,9 @@ PMPI shim), under weak scaling: each rank holds the same number of parcels
 and cells.
 
 Scene: a box of P unit cubes along x (P ranks, decomposition simple (P 1 1),
-10^3 cells per cube, walls; cyclic in x, y and z for the periodic rung), n parcels per cube at random positions with
+10^3 cells per cube, walls; cyclic in x, y and z for the periodic rung;
+with --ring cyclic in x, so that every rank has two neighbours as in the
+middle of a long duct), n parcels per cube at random positions with
 charges of both signs (1e-9 C scale), chargedParticleFoam without contact.
 Each rung runs S0 and S steps; per step = (tally(S) - tally(S0))/(S - S0),
 which removes the start-up (reading, decomposition) traffic. The parcels are
@@ -13,7 +15,7 @@ injected in one serial step first and the parallel runs continue from the
 decomposed cloud (each rank reads its own parcels, as in a large run). Peak
 memory is the resident high-water mark (VmHWM) of the S-step run.
 
-    commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12]
+    commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12] [--ring]
                   [--rungs cutoffCoulomb,directCoulomb,meshPoisson,periodic,inducedDipole,bem,bemPairs]
                   [--work /tmp/commVolume]
     commVolume.py --pingpong    (latency and bandwidth between 2 ranks)
@@ -49,16 +51,20 @@ RUNGS = {
     "periodic": "electrostaticsModel periodic;\n    periodicCoeffs { method p3m; }",
     # Dielectric parcels (epsilonR 4): the cutoff sum and the induced
     # dipoles within rNear (a halo and a distributed CG)
+    # The CG's iterations follow the global system (0 to 2 a step at
+    # tolerance 1e-8, warm-started, more with more parcels): fixed at 3 a
+    # step here (tolerance 1e-30, maxIter 3; a warning each step) so that
+    # every rank count compares the same work
     "inducedDipole": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-                     "nearField { type inducedDipole; rNear 0.05; } }",
+                     "nearField { type inducedDipole; rNear 0.05; tolerance 1e-30; maxIter 3; } }",
     # The same with BEM clusters (none form at this density: what the
-    # cluster search costs)
+    # cluster search costs; the isolated parcels' dipoles as above)
     "bem": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-           "nearField { type bem; rNear 0.05; } }",
+           "nearField { type bem; rNear 0.05; tolerance 1e-30; maxIter 3; } }",
     # Every parcel in a BEM cluster: the parcels in close pairs (gap 0.2
     # radii, random directions), 200 patches per parcel
     "bemPairs": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-                "nearField { type bem; rNear 0.05; nPatches 200; } }",
+                "nearField { type bem; rNear 0.05; nPatches 200; tolerance 1e-30; maxIter 3; } }",
 }
 
 
@@ -70,7 +76,7 @@ def sh(cmd, cwd, log):
         sys.exit(f"{cmd} failed in {cwd} (see {log}):\n{text[-2000:]}")
 
 
-def make_case(case, P, n, rung, steps, seed=1):
+def make_case(case, P, n, rung, steps, seed=1, ring=False):
     if os.path.exists(case):
         shutil.rmtree(case)
     shutil.copytree(os.path.join(TOP, "tutorials", "twoChargedSpheres"), case,
@@ -83,13 +89,24 @@ def make_case(case, P, n, rung, steps, seed=1):
 (
     (0 0 0) ({P} 0 0) ({P} 1 0) (0 1 0) (0 0 1) ({P} 0 1) ({P} 1 1) (0 1 1)
 );""", s, flags=re.S)
-    s = re.sub(r"blocks\s*\(.*?\);", f"blocks\n(\n    hex (0 1 2 3 4 5 6 7) ({10*P} 10 10) simpleGrading (1 1 1)\n);",
+    # In the ring the mesh far field's halo (4 radii) must stay within half
+    # a rank's extent, as in a long duct (at 2 ranks the strips on either
+    # side are then different parcels): 20 cells per unit, radius 2 cells
+    fine = ring and rung == "meshPoisson"
+    c = 20 if fine else 10
+    s = re.sub(r"blocks\s*\(.*?\);", f"blocks\n(\n    hex (0 1 2 3 4 5 6 7) ({c*P} {c} {c}) simpleGrading (1 1 1)\n);",
                s, flags=re.S)
     if rung == "periodic":
         pairs = [("x", "(0 4 7 3)", "(1 2 6 5)"), ("y", "(0 1 5 4)", "(3 7 6 2)"), ("z", "(0 3 2 1)", "(4 5 6 7)")]
         patches = "".join(f"    {d}0 {{ type cyclic; neighbourPatch {d}1; faces ({a}); }}\n"
                           f"    {d}1 {{ type cyclic; neighbourPatch {d}0; faces ({b}); }}\n" for d, a, b in pairs)
         s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n" + patches + ");", s, flags=re.S)
+    elif ring:
+        s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n"
+                   "    x0 { type cyclic; neighbourPatch x1; faces ((0 4 7 3)); }\n"
+                   "    x1 { type cyclic; neighbourPatch x0; faces ((1 2 6 5)); }\n"
+                   "    walls { type wall; faces ((0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }\n);",
+                   s, flags=re.S)
     else:
         s = re.sub(r"boundary\s*\(.*\);", "boundary\n(\n    walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2) (0 3 2 1) (4 5 6 7)); }\n);",
                    s, flags=re.S)
@@ -97,6 +114,9 @@ def make_case(case, P, n, rung, steps, seed=1):
     # Parcels and the rung
     rng = np.random.default_rng(seed)
     x = rng.random((n*P, 3))*[P - 0.1, 0.9, 0.9] + 0.05
+    if ring:
+        # no ends: the parcels fill the ring along x
+        x[:, 0] = rng.random(n*P)*P
     q = 1e-9*(2*rng.random(n*P) - 1)
     if rung == "bemPairs":
         # the second of each pair beside the first: centres 1.1 diameters
@@ -104,13 +124,16 @@ def make_case(case, P, n, rung, steps, seed=1):
         u = rng.normal(size=(n*P//2, 3))
         u /= np.linalg.norm(u, axis=1)[:, None]
         x[1::2] = x[0::2] + 1.1e-3*u
+        if ring:
+            x[:, 0] %= P
     p = os.path.join(case, "constant", "cloudProperties")
     s = open(p).read()
     eps = " epsilonR 4;" if rung in ("inducedDipole", "bem", "bemPairs") else ""
     parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000;%s q %.9g; }"
                         % (r[0], r[1], r[2], eps, c) for r, c in zip(x, q))
     s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
-    s = re.sub(r"electrostaticsModel\s+\w+;", RUNGS[rung], s)
+    model = RUNGS[rung].replace("radius 0.25", "radius 0.1") if fine else RUNGS[rung]
+    s = re.sub(r"electrostaticsModel\s+\w+;", model, s)
     # No per-step parcel history (it gathers every parcel on the master)
     # and no scene check: only the solver's own traffic
     s = re.sub(r"cloudFunctions\s*\{.*?\n\}", "cloudFunctions\n{\n}", s, flags=re.S)
@@ -223,6 +246,8 @@ def main():
     ap.add_argument("--steps", default="2,12")
     ap.add_argument("--rungs", default="cutoffCoulomb,directCoulomb,meshPoisson")
     ap.add_argument("--work", default="/tmp/commVolume")
+    ap.add_argument("--ring", action="store_true",
+                    help="the row of cubes cyclic in x: no end ranks (every rank has two neighbours)")
     ap.add_argument("--pingpong", action="store_true",
                     help="only measure the latency and bandwidth between two ranks (pingPong.c)")
     a = ap.parse_args()
@@ -245,7 +270,9 @@ def main():
     for rung in a.rungs.split(","):
         duct = rung == "shortDuct"
         print(f"\n{rung}" + (f" (strong scaling: {a.n} parcels in all, per fluid step)" if duct
-                              else f" (weak scaling: {a.n} parcels and 1000 cells per rank)"))
+                              else f" (weak scaling: {a.n} parcels and "
+                              f"{8000 if a.ring and rung == 'meshPoisson' else 1000} cells per rank"
+                              + (", a ring: cyclic in x)" if a.ring else ")")))
         print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | all-reduces/step | all-to-alls/step | peak memory per rank [MB] (max) |")
         print("| --- | --- | --- | --- | --- | --- | --- |")
         perRank = {}
@@ -258,7 +285,7 @@ def main():
                     make_duct(case, P, a.n, steps)
                     res.append(tally(case, P, lib, "chargedDPMFoam"))
                 else:
-                    make_case(case, P, a.n, rung, steps)
+                    make_case(case, P, a.n, rung, steps, ring=a.ring)
                     res.append(tally(case, P, lib))
             b = np.array([(res[1][r][1] - res[0][r][1])/(S - S0) for r in range(P)])
             m = np.array([(res[1][r][0] - res[0][r][0])/(S - S0) for r in range(P)])

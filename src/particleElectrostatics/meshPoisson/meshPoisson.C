@@ -281,64 +281,8 @@ Foam::scalar Foam::meshPoisson::maxNonOrthogonality() const
 
 void Foam::meshPoisson::findPeriodicShifts()
 {
-    // One translation per cyclic pair (owner side). A processor may hold
-    // none of a patch's faces: the vector is the largest over processors
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    forAll(pbm, patchi)
-    {
-        const cyclicPolyPatch* cpp = isA<cyclicPolyPatch>(pbm[patchi]);
-        if (!cpp || !cpp->owner())
-        {
-            continue;
-        }
-        if (cpp->transform() == coupledPolyPatch::ROTATIONAL)
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Cyclic patch " << cpp->name() << " is rotational: the "
-                << "mesh far field supports translational cyclics only"
-                << exit(FatalIOError);
-        }
-        // The translation as found from the faces (blockMesh cyclics
-        // leave separationVector unset)
-        vector s(Zero);
-        if (cpp->size() && cpp->separated() && cpp->separation().size())
-        {
-            s = cpp->separation()[0];
-        }
-        else if (cpp->size())
-        {
-            s = cpp->separationVector();
-        }
-        else
-        {
-            // A processor split along the periodic direction holds its
-            // faces as processorCyclic patches (the cyclic itself has none
-            // on any processor): the translation between a face and its
-            // neighbour's
-            for (const polyPatch& pp : pbm)
-            {
-                const processorCyclicPolyPatch* pcp =
-                    isA<processorCyclicPolyPatch>(pp);
-                if
-                (
-                    pcp && pcp->size()
-                 && (
-                        pcp->referPatchID() == patchi
-                     || pcp->referPatchID() == cpp->neighbPatchID()
-                    )
-                )
-                {
-                    s = pcp->neighbFaceCentres()[0] - pcp->faceCentres()[0];
-                    break;
-                }
-            }
-        }
-        reduce(s, maxMagSqrOp<vector>());
-        if (magSqr(s) > 0)
-        {
-            periodicShifts_.append(s);
-        }
-    }
+    // One translation per cyclic pair
+    periodicShifts_ = processorHalo::cyclicShifts(mesh_);
     if (periodicShifts_.size() > 3)
     {
         FatalIOErrorInFunction(coeffs_)
@@ -412,33 +356,7 @@ void Foam::meshPoisson::binCells()
 
 Foam::List<Foam::vector> Foam::meshPoisson::periodicTranslations() const
 {
-    label nComb = 1;
-    forAll(periodicShifts_, d)
-    {
-        nComb *= 3;
-    }
-    DynamicList<vector> shifts(nComb - 1);
-    for (label comb = 0; comb < nComb; ++comb)
-    {
-        vector shift(Zero);
-        bool identityShift = true;
-        label c = comb;
-        forAll(periodicShifts_, d)
-        {
-            const label n = c % 3 - 1;
-            c /= 3;
-            if (n != 0)
-            {
-                shift += scalar(n)*periodicShifts_[d];
-                identityShift = false;
-            }
-        }
-        if (!identityShift)
-        {
-            shifts.append(shift);
-        }
-    }
-    return List<vector>(std::move(shifts));
+    return processorHalo::translationCombinations(periodicShifts_);
 }
 
 

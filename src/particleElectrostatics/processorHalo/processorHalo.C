@@ -7,19 +7,87 @@
 #include "Pstream.H"
 #include "UIndirectList.H"
 #include "MeshObject.H"
+#include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "SubField.H"
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
 namespace Foam
 {
 
-//- The processors' boxes, kept with the mesh (one exchange per mesh; a
-//  GeometricMeshObject is destroyed when the points move)
+//- The processors' boxes and the cyclic patches' translations, kept with
+//  the mesh (one exchange per mesh; a GeometricMeshObject is destroyed when
+//  the points move)
 class processorMeshBoxes
 :
     public MeshObject<polyMesh, GeometricMeshObject, processorMeshBoxes>
 {
     List<boundBox> boxes_;
+
+    List<vector> cyclicShifts_;
+
+    wordList rotationalCyclics_;
+
+    //- One translation per cyclic pair (owner side). A processor may hold
+    //  none of a patch's faces: the vector is the largest over processors
+    void findCyclicShifts(const polyMesh& mesh)
+    {
+        const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+        forAll(pbm, patchi)
+        {
+            const cyclicPolyPatch* cpp = isA<cyclicPolyPatch>(pbm[patchi]);
+            if (!cpp || !cpp->owner())
+            {
+                continue;
+            }
+            if (cpp->transform() == coupledPolyPatch::ROTATIONAL)
+            {
+                rotationalCyclics_.append(cpp->name());
+                continue;
+            }
+            // The translation as found from the faces (blockMesh cyclics
+            // leave separationVector unset)
+            vector s(Zero);
+            if (cpp->size() && cpp->separated() && cpp->separation().size())
+            {
+                s = cpp->separation()[0];
+            }
+            else if (cpp->size())
+            {
+                s = cpp->separationVector();
+            }
+            else
+            {
+                // A processor split along the periodic direction holds its
+                // faces as processorCyclic patches (the cyclic itself has
+                // none on any processor): the translation between a face
+                // and its neighbour's
+                for (const polyPatch& pp : pbm)
+                {
+                    const processorCyclicPolyPatch* pcp =
+                        isA<processorCyclicPolyPatch>(pp);
+                    if
+                    (
+                        pcp && pcp->size()
+                     && (
+                            pcp->referPatchID() == patchi
+                         || pcp->referPatchID() == cpp->neighbPatchID()
+                        )
+                    )
+                    {
+                        s = pcp->neighbFaceCentres()[0] - pcp->faceCentres()[0];
+                        break;
+                    }
+                }
+            }
+            reduce(s, maxMagSqrOp<vector>());
+            if (magSqr(s) > 0)
+            {
+                cyclicShifts_.append(s);
+            }
+        }
+    }
 
 public:
 
@@ -33,11 +101,22 @@ public:
         boxes_[Pstream::myProcNo()] = boundBox(mesh.points(), false);
         Pstream::gatherList(boxes_);
         Pstream::scatterList(boxes_);
+        findCyclicShifts(mesh);
     }
 
     const List<boundBox>& boxes() const
     {
         return boxes_;
+    }
+
+    const List<vector>& cyclicShifts() const
+    {
+        return cyclicShifts_;
+    }
+
+    const wordList& rotationalCyclics() const
+    {
+        return rotationalCyclics_;
     }
 };
 
@@ -52,6 +131,58 @@ const Foam::List<Foam::boundBox>& Foam::processorHalo::processorBoxes
 )
 {
     return processorMeshBoxes::New(mesh).boxes();
+}
+
+
+const Foam::List<Foam::vector>& Foam::processorHalo::cyclicShifts
+(
+    const polyMesh& mesh
+)
+{
+    const processorMeshBoxes& m = processorMeshBoxes::New(mesh);
+    if (m.rotationalCyclics().size())
+    {
+        FatalErrorInFunction
+            << "Cyclic patches " << m.rotationalCyclics() << " are "
+            << "rotational: the particle electrostatics sum across "
+            << "translational cyclic patches only" << exit(FatalError);
+    }
+    return m.cyclicShifts();
+}
+
+
+Foam::List<Foam::vector> Foam::processorHalo::translationCombinations
+(
+    const UList<vector>& shifts
+)
+{
+    label nComb = 1;
+    forAll(shifts, d)
+    {
+        nComb *= 3;
+    }
+    DynamicList<vector> t(nComb - 1);
+    for (label comb = 0; comb < nComb; ++comb)
+    {
+        vector shift(Zero);
+        bool identityShift = true;
+        label c = comb;
+        forAll(shifts, d)
+        {
+            const label n = c % 3 - 1;
+            c /= 3;
+            if (n != 0)
+            {
+                shift += scalar(n)*shifts[d];
+                identityShift = false;
+            }
+        }
+        if (!identityShift)
+        {
+            t.append(shift);
+        }
+    }
+    return List<vector>(std::move(t));
 }
 
 
@@ -85,7 +216,8 @@ Foam::processorHalo::processorHalo
     const List<boundBox>& boxes,
     const UList<point>& x,
     const scalar range,
-    const UList<vector>& translations
+    const UList<vector>& translations,
+    const bool unfold
 )
 :
     nLocal_(x.size()),
@@ -93,11 +225,65 @@ Foam::processorHalo::processorHalo
     recvStart_(Pstream::nProcs() + 1, x.size()),
     points_(x)
 {
-    if (!Pstream::parRun() || !(range > 0))
+    if (!(range > 0))
     {
         return;
     }
 
+    if (Pstream::parRun())
+    {
+        exchangePoints(boxes, x, range, translations);
+    }
+    const boundBox& mine = boxes[Pstream::myProcNo()];
+    if (unfold && translations.size() && mine.valid())
+    {
+        const vector margin(range, range, range);
+        appendCopies
+        (
+            translations,
+            boundBox(mine.min() - margin, mine.max() + margin)
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::processorHalo::appendCopies
+(
+    const UList<vector>& translations,
+    const boundBox& reach
+)
+{
+    // In the order of the translations, then of the points (local and
+    // halo)
+    const label nReal = points_.size();
+    DynamicList<point> all(points_);
+    DynamicList<label> copyOf;
+    for (const vector& t : translations)
+    {
+        for (label i = 0; i < nReal; ++i)
+        {
+            if (reach.contains(points_[i] + t))
+            {
+                all.append(points_[i] + t);
+                copyOf.append(i);
+            }
+        }
+    }
+    copyOf_.transfer(copyOf);
+    points_.transfer(all);
+}
+
+
+void Foam::processorHalo::exchangePoints
+(
+    const List<boundBox>& boxes,
+    const UList<point>& x,
+    const scalar range,
+    const UList<vector>& translations
+)
+{
     const label me = Pstream::myProcNo();
     const vector margin(range, range, range);
     const auto grown = [&](const label j)

@@ -54,6 +54,19 @@ void Foam::processorHalo::gather(List<Type>& values) const
 template<class Type>
 void Foam::processorHalo::updateHalo(UList<Type>& values) const
 {
+    exchangeHalo(values);
+    // The cyclic copies from their originals (local or halo)
+    const label nReal = points_.size() - copyOf_.size();
+    forAll(copyOf_, c)
+    {
+        values[nReal + c] = values[copyOf_[c]];
+    }
+}
+
+
+template<class Type>
+void Foam::processorHalo::exchangeHalo(UList<Type>& values) const
+{
     if (!Pstream::parRun())
     {
         return;
@@ -82,6 +95,13 @@ void Foam::processorHalo::updateHalo(UList<Type>& values) const
 template<class Type>
 void Foam::processorHalo::sumToOwners(UList<Type>& values) const
 {
+    // The cyclic copies' entries to their originals first (a halo
+    // original passes them on to its owner)
+    const label nReal = points_.size() - copyOf_.size();
+    forAll(copyOf_, c)
+    {
+        values[copyOf_[c]] += values[nReal + c];
+    }
     if (!Pstream::parRun())
     {
         return;

@@ -3,6 +3,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "CoulombElectrostatics.H"
+#include "keyedPoints.H"
+#include "processorHalo.H"
 #include "ListListOps.H"
 #include "Pstream.H"
 #include "inputLimits.H"
@@ -77,25 +79,22 @@ void Foam::CoulombElectrostatics<CloudType>::correctContactPairs
 ) const
 {
     // The contact partners named by the collision records, among the
-    // sources by their (origProc, origId)
-    HashTable<label, labelPair, Hash<labelPair>> where(2*xS.size());
-    forAll(xS, j)
-    {
-        where.insert(labelPair(ids[2*j], ids[2*j + 1]), j);
-    }
+    // sources by their (origProc, origId): the nearest instance (a partner
+    // across a cyclic patch is its copy)
+    const keyedPoints where(xS, ids);
 
     label i = 0;
     for (const auto& p : this->owner())
     {
         for (const auto& record : p.collisionRecords().pairRecords())
         {
-            const auto iter = where.cfind
+            const label j = where.nearest
             (
-                labelPair(record.origProcOfOther(), record.origIdOfOther())
+                labelPair(record.origProcOfOther(), record.origIdOfOther()),
+                xS[myStart + i]
             );
-            if (iter.found())
+            if (j >= 0)
             {
-                const label j = iter.val();
                 f[i] += contactCorrection_*coulomb_.pairForce
                 (
                     xS[myStart + i], qS[myStart + i], xS[j], qS[j]
@@ -221,7 +220,26 @@ Foam::CoulombElectrostatics<CloudType>::CoulombElectrostatics
       - 1
     ),
     rCut_(cutoff ? readCutoff(this->coeffDict()) : -1)
-{}
+{
+    // The pairs through a cyclic patch come from the copies shifted by
+    // one period (gatherHalo): all of them while rCut is at most the
+    // shortest period
+    const List<vector> shifts
+    (
+        cutoff ? processorHalo::cyclicShifts(owner.mesh()) : List<vector>()
+    );
+    for (const vector& s : shifts)
+    {
+        if (rCut_ > mag(s))
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "Entry rCut = " << rCut_ << " in "
+                << this->coeffDict().name().c_str() << " exceeds the "
+                << "cyclic period " << mag(s) << " of the mesh: it must be "
+                << "in (0, " << mag(s) << "]" << exit(FatalIOError);
+        }
+    }
+}
 
 
 template<class CloudType>

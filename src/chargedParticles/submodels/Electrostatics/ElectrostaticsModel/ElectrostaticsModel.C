@@ -165,11 +165,18 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
         ++i;
     }
 
+    // Unfolded across the cyclic patches: their copies within range too
+    const polyMesh& mesh = this->owner().mesh();
     const processorHalo halo
     (
-        processorHalo::processorBoxes(this->owner().mesh()),
+        processorHalo::processorBoxes(mesh),
         xLocal,
-        range
+        range,
+        processorHalo::translationCombinations
+        (
+            processorHalo::cyclicShifts(mesh)
+        ),
+        true
     );
     x = halo.points();
     halo.gather(qLocal);

@@ -9,6 +9,7 @@
 #include "meshPoisson.H"
 #include "MeshPoisson.H"
 #include "cyclicPolyPatch.H"
+#include "processorHalo.H"
 #include "emptyPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "processorPolyPatch.H"
@@ -276,6 +277,13 @@ Foam::ElectrostaticsSurvey<CloudType>::candidates
     c.append({"none", rungDict("none", dictionary())});
 
     const bool periodic = (kind_ == sceneKind::periodic);
+    // The cutoff sums take the copies through cyclic patches one period
+    // away: rCut at most the shortest period
+    scalar minPeriod = GREAT;
+    for (const vector& s : processorHalo::cyclicShifts(cloud_.mesh()))
+    {
+        minPeriod = min(minPeriod, mag(s));
+    }
     if (!periodic)
     {
         // The O(N^2) sum only where it takes seconds, not hours
@@ -286,7 +294,7 @@ Foam::ElectrostaticsSurvey<CloudType>::candidates
         for (const label m : {2, 4, 8})
         {
             // A cutoff beyond the domain is directCoulomb
-            if (m*spacing_ < mag(L_))
+            if (m*spacing_ < mag(L_) && m*spacing_ <= minPeriod)
             {
                 dictionary d(eps);
                 d.add("rCut", m*spacing_);
@@ -302,8 +310,11 @@ Foam::ElectrostaticsSurvey<CloudType>::candidates
     {
         dictionary d(eps);
         d.add("rCut", 4*spacing_);
-        c.append({"imageCoulomb(rCut=4l)", rungDict("imageCoulomb", d)});
-        const scalar edge = cmptMin(L_);
+        if (4*spacing_ <= minPeriod)
+        {
+            c.append({"imageCoulomb(rCut=4l)", rungDict("imageCoulomb", d)});
+        }
+        const scalar edge = min(cmptMin(L_), minPeriod);
         if (edge > 4*spacing_)
         {
             d.set("rCut", edge);

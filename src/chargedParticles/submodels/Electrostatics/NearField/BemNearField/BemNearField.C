@@ -628,6 +628,15 @@ Foam::BemNearField<CloudType>::BemNearField
             << "Entry isolated " << isolated_ << " in " << dict.name().c_str()
             << " is not one of: inducedDipole none" << exit(FatalIOError);
     }
+    if (processorHalo::cyclicShifts(owner.mesh()).size())
+    {
+        WarningInFunction
+            << "nearField type bem in " << dict.name().c_str() << ": the "
+            << "mesh has cyclic patches; clusters do not form across them "
+            << "(a close pair through a cyclic patch gets the induced-dipole"
+            << " rung, isolated " << isolated_ << ", and the far field)"
+            << endl;
+    }
     Info<< "    BEM clusters: surface gaps below " << clusterGap_
         << " x the smaller semi-axis, " << nPatches_ << " patches per parcel,"
         << " isolated parcels: " << isolated_ << ", parcels near a cluster: "

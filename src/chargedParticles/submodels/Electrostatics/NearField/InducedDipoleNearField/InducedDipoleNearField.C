@@ -7,6 +7,7 @@
 #include "inducedDipole.H"
 #include "Pstream.H"
 #include "processorHalo.H"
+#include "keyedPoints.H"
 
 #include <algorithm>
 #include <memory>
@@ -210,6 +211,17 @@ void Foam::InducedDipoleNearField<CloudType>::setNearRadius
             << " diameter " << dMax << " of the largest polarisable parcel:"
             << " pairs in contact would be left out" << exit(FatalIOError);
     }
+    for (const vector& s : processorHalo::cyclicShifts(this->owner().mesh()))
+    {
+        if (!(cmptMax(L) > 0) && rNear_ > mag(s))
+        {
+            FatalIOErrorInFunction(this->dict())
+                << "Entry rNear = " << rNear_ << " in "
+                << this->dict().name().c_str() << " exceeds the cyclic "
+                << "period " << mag(s) << " of the mesh: it must be at most "
+                << mag(s) << exit(FatalIOError);
+        }
+    }
     if (cmptMax(L) > 0 && !(2*rNear_ < cmptMin(L)))
     {
         FatalIOErrorInFunction(this->dict())
@@ -244,20 +256,32 @@ Foam::InducedDipoleNearField<CloudType>::gatherHalo
     // In parallel, copies of the other processors' parcels within rNear
     // of this processor's box appended (a halo: every pair of an own
     // parcel is here; through the periodic box's translations if the far
-    // field is periodic)
+    // field is periodic, the kernel taking the nearest image). Otherwise
+    // through the mesh's cyclic patches: their copies appended as well
+    // (also in serial)
+    const polyMesh& mesh = this->owner().mesh();
+    const bool periodic = cmptMax(L) > 0;
+    const List<vector> cyclic
+    (
+        periodic
+      ? List<vector>()
+      : processorHalo::translationCombinations
+        (
+            processorHalo::cyclicShifts(mesh)
+        )
+    );
     std::unique_ptr<processorHalo> halo;
-    if (Pstream::parRun())
+    if (Pstream::parRun() || cyclic.size())
     {
         halo.reset
         (
             new processorHalo
             (
-                processorHalo::processorBoxes(this->owner().mesh()),
+                processorHalo::processorBoxes(mesh),
                 x,
                 rNear_,
-                cmptMax(L) > 0
-              ? processorHalo::boxTranslations(L)
-              : List<vector>()
+                periodic ? processorHalo::boxTranslations(L) : cyclic,
+                !periodic
             )
         );
         x = halo->points();
@@ -274,18 +298,15 @@ Foam::InducedDipoleNearField<CloudType>::gatherHalo
 template<class CloudType>
 void Foam::InducedDipoleNearField<CloudType>::setContactPairs
 (
+    const UList<point>& x,
     const UList<labelPair>& keys,
     const labelList& rank
 )
 {
     // Pairs in contact, from the collision records (Ruan Eq. 44): keys
-    // and rank of the own parcels and the halo's copies
-    const label N = keys.size();
-    HashTable<label, labelPair, labelPair::Hash<>> where(2*N);
-    for (label k = 0; k < N; ++k)
-    {
-        where.insert(keys[k], rank[k]);
-    }
+    // and rank of the own parcels and the halo's copies (the nearest
+    // instance: a partner across a cyclic patch is its copy)
+    const keyedPoints where(x, keys);
     DynamicList<labelPair> contacts;
     label i = 0;
     for (const auto& p : this->owner())
@@ -293,13 +314,14 @@ void Foam::InducedDipoleNearField<CloudType>::setContactPairs
         const label gi = rank[i];
         for (const auto& record : p.collisionRecords().pairRecords())
         {
-            const auto iter = where.cfind
+            const label j = where.nearest
             (
-                labelPair(record.origProcOfOther(), record.origIdOfOther())
+                labelPair(record.origProcOfOther(), record.origIdOfOther()),
+                x[i]
             );
-            if (iter.found())
+            if (j >= 0)
             {
-                contacts.append(labelPair(gi, iter.val()));
+                contacts.append(labelPair(gi, rank[j]));
             }
         }
         ++i;
@@ -452,7 +474,7 @@ void Foam::InducedDipoleNearField<CloudType>::solveDipoles
 
     if (contactWeight_ != 1)
     {
-        setContactPairs(keys, rank);
+        setContactPairs(x, keys, rank);
     }
 
     dipoles.solve();

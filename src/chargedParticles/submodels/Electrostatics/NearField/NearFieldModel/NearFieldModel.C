@@ -29,8 +29,9 @@ Foam::labelList Foam::NearFieldModel<CloudType>::idOrder
     const labelList& ids
 )
 {
+    // Stable: a parcel's cyclic copies follow it in the order they came
     labelList order(identity(ids.size()/2));
-    std::sort
+    std::stable_sort
     (
         order.begin(),
         order.end(),
