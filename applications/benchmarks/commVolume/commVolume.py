@@ -16,6 +16,7 @@ decomposed cloud (each rank reads its own parcels, as in a large run). Peak
 memory is the resident high-water mark (VmHWM) of the S-step run.
 
     commVolume.py [--ranks 2,4,8] [--n 2000] [--steps 2,12] [--ring]
+                  [--cgIterations 3]
                   [--rungs cutoffCoulomb,directCoulomb,meshPoisson,periodic,inducedDipole,bem,bemPairs]
                   [--work /tmp/commVolume]
     commVolume.py --pingpong    (latency and bandwidth between 2 ranks)
@@ -52,19 +53,19 @@ RUNGS = {
     # Dielectric parcels (epsilonR 4): the cutoff sum and the induced
     # dipoles within rNear (a halo and a distributed CG)
     # The CG's iterations follow the global system (0 to 2 a step at
-    # tolerance 1e-8, warm-started, more with more parcels): fixed at 3 a
-    # step here (tolerance 1e-30, maxIter 3; a warning each step) so that
-    # every rank count compares the same work
+    # tolerance 1e-8, warm-started, more with more parcels): fixed by
+    # --cgIterations (CG below) so that every rank count compares the same
+    # work
     "inducedDipole": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-                     "nearField { type inducedDipole; rNear 0.05; tolerance 1e-30; maxIter 3; } }",
+                     "nearField { type inducedDipole; rNear 0.05;CG } }",
     # The same with BEM clusters (none form at this density: what the
     # cluster search costs; the isolated parcels' dipoles as above)
     "bem": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-           "nearField { type bem; rNear 0.05; tolerance 1e-30; maxIter 3; } }",
+           "nearField { type bem; rNear 0.05;CG } }",
     # Every parcel in a BEM cluster: the parcels in close pairs (gap 0.2
     # radii, random directions), 200 patches per parcel
     "bemPairs": "electrostaticsModel cutoffCoulomb;\n    cutoffCoulombCoeffs { rCut 0.2; "
-                "nearField { type bem; rNear 0.05; nPatches 200; tolerance 1e-30; maxIter 3; } }",
+                "nearField { type bem; rNear 0.05; nPatches 200;CG } }",
 }
 
 
@@ -76,7 +77,7 @@ def sh(cmd, cwd, log):
         sys.exit(f"{cmd} failed in {cwd} (see {log}):\n{text[-2000:]}")
 
 
-def make_case(case, P, n, rung, steps, seed=1, ring=False):
+def make_case(case, P, n, rung, steps, seed=1, ring=False, cg=3):
     if os.path.exists(case):
         shutil.rmtree(case)
     shutil.copytree(os.path.join(TOP, "tutorials", "twoChargedSpheres"), case,
@@ -133,6 +134,9 @@ def make_case(case, P, n, rung, steps, seed=1, ring=False):
                         % (r[0], r[1], r[2], eps, c) for r, c in zip(x, q))
     s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
     model = RUNGS[rung].replace("radius 0.25", "radius 0.1") if fine else RUNGS[rung]
+    # cg iterations of the dipole solve every step (tolerance 1e-30,
+    # maxIter cg: a warning each step), or 0: to the default tolerance
+    model = model.replace(";CG", f"; tolerance 1e-30; maxIter {cg};" if cg else ";")
     s = re.sub(r"electrostaticsModel\s+\w+;", model, s)
     # No per-step parcel history (it gathers every parcel on the master)
     # and no scene check: only the solver's own traffic
@@ -246,6 +250,8 @@ def main():
     ap.add_argument("--steps", default="2,12")
     ap.add_argument("--rungs", default="cutoffCoulomb,directCoulomb,meshPoisson")
     ap.add_argument("--work", default="/tmp/commVolume")
+    ap.add_argument("--cgIterations", type=int, default=3,
+                    help="CG iterations of the dipole solve every step (0: to its default tolerance 1e-8)")
     ap.add_argument("--ring", action="store_true",
                     help="the row of cubes cyclic in x: no end ranks (every rank has two neighbours)")
     ap.add_argument("--pingpong", action="store_true",
@@ -285,7 +291,7 @@ def main():
                     make_duct(case, P, a.n, steps)
                     res.append(tally(case, P, lib, "chargedDPMFoam"))
                 else:
-                    make_case(case, P, a.n, rung, steps, ring=a.ring)
+                    make_case(case, P, a.n, rung, steps, ring=a.ring, cg=a.cgIterations)
                     res.append(tally(case, P, lib))
             b = np.array([(res[1][r][1] - res[0][r][1])/(S - S0) for r in range(P)])
             m = np.array([(res[1][r][0] - res[0][r][0])/(S - S0) for r in range(P)])
