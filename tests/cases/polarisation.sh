@@ -230,47 +230,61 @@ check polarisation.periodicPairs "(the near field pairs the prolates across x = 
     grep -q "2 polarisable, 1 pairs" "$work/periodic-0/log.solver"
 compareForces periodicNearField "$work/periodic-0" "$work/periodic-0.5" 1e-8
 
-# - cutoffCoulomb in a duct cyclic in x (walls y and z): the same two
-#   prolates across the cyclic patch x = 0 and shifted by half the period;
-#   along the duct the scene is translation invariant, so the far field's
-#   pairs and the near field's through the cyclic patch (the parcels'
-#   copies) must give the same forces and torques; and the pair across
-#   x = 0 on a ring of 2 processors (split at x = 0.5) as serially.
-for shift in 0 0.5 ring
-do
-    copyCase twoChargedSpheres "$work/duct-$shift"
-    (
-        cd "$work/duct-$shift" || exit 1
-        $PY "$tools/unitBoxMesh.py" xCyclic
-        $PY - ${shift/ring/0} <<'PYEOF'
+# - cutoffCoulomb in a duct cyclic in x (walls y and z): two parcels
+#   across the cyclic patch x = 0 and the same two shifted by half the
+#   period; along the duct the scene is translation invariant, so the far
+#   field's pairs and the near field's through the cyclic patch (the
+#   parcels' copies) must give the same forces and torques; and the pair
+#   across x = 0 on a ring of 2 processors (split at x = 0.5) as serially.
+#   Two prolates with the inducedDipole near field; two spheres 0.3 radii
+#   apart with the bem near field (a cluster solved with the BEM).
+cyclicPair()    # cyclicPair <name> <x of the first> <x of the second> <shape> <nearField>
+{
+    local name=$1 shift
+    for shift in 0 0.5 ring
+    do
+        copyCase twoChargedSpheres "$work/$name-$shift"
+        (
+            cd "$work/$name-$shift" || exit 1
+            $PY "$tools/unitBoxMesh.py" xCyclic
+            $PY - ${shift/ring/0} "$2" "$3" "$4" "$5" <<'PYEOF'
 import re, sys
-shift = float(sys.argv[1])
-xs = [(0.95 + shift) % 1.0, (0.05 + shift) % 1.0]
+shift, x0, x1, shape, near = float(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), sys.argv[4], sys.argv[5]
+xs = [(x0 + shift) % 1.0, (x1 + shift) % 1.0]
 parcels = "\n".join(
-    "                { position (%.12g %g %g); semiAxes (0.04 0.02 0.02); eulerAngles (%g 20 0); epsilonR 6; rho 1e30; q %g; }"
-    % (x, 0.5 + 0.01*i, 0.5, 30 + 40*i, (1e-9, -2e-9)[i]) for i, x in enumerate(xs))
+    "                { position (%.12g %g %g); %s; epsilonR 6; rho 1e30; q %g; }"
+    % (x, 0.5 + 0.01*i, 0.5, shape.replace("ANGLE", str(30 + 40*i)), (1e-9, -2e-9)[i]) for i, x in enumerate(xs))
 p = "constant/cloudProperties"
 s = open(p).read()
 s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
 s = re.sub(r"electrostaticsModel\s+\w+;", "electrostaticsModel cutoffCoulomb;\n    appliedField (0 1e3 0);\n"
-           "    cutoffCoulombCoeffs { rCut 0.3; nearField { type inducedDipole; tolerance 1e-14; } }", s)
+           "    cutoffCoulombCoeffs { rCut 0.3; nearField { %s } }" % near, s)
 open(p, "w").write(s)
 PYEOF
-        setEndTime 1e-6
-        if [ $shift = ring ]
-        then
-            setDecomposition 2 "2 1 1"
-            run blockMesh blockMesh && run decomposePar decomposePar \
-             && run solver mpirun -np 2 chargedParticleFoam -parallel && history .
-        else
-            run blockMesh blockMesh && run solver chargedParticleFoam && history .
-        fi
-    ) || fail "polarisation.cyclicNearField (run failed, see $work/duct-$shift)"
-done
+            setEndTime 1e-6
+            if [ $shift = ring ]
+            then
+                setDecomposition 2 "2 1 1"
+                run blockMesh blockMesh && run decomposePar decomposePar \
+                 && run solver mpirun -np 2 chargedParticleFoam -parallel && history .
+            else
+                run blockMesh blockMesh && run solver chargedParticleFoam && history .
+            fi
+        ) || fail "polarisation.$name (run failed, see $work/$name-$shift)"
+    done
+}
+cyclicPair duct 0.95 0.05 "semiAxes (0.04 0.02 0.02); eulerAngles (ANGLE 20 0)" \
+    "type inducedDipole; tolerance 1e-14;"
 check polarisation.cyclicPairs "(the near field pairs the prolates across the cyclic patch)" \
     grep -q "2 polarisable, 1 pairs" "$work/duct-0/log.solver"
 compareForces cyclicNearField "$work/duct-0" "$work/duct-0.5" 1e-10
 compareForces cyclicNearFieldRing "$work/duct-0" "$work/duct-ring" 1e-10
+cyclicPair bem 0.9775 0.0225 "semiAxes (0.02 0.02 0.02)" \
+    "type bem; nPatches 200; solver { tolerance 1e-12; }"
+check polarisation.cyclicBemCluster "(the spheres across the cyclic patch form a BEM cluster)" \
+    grep -q "BEM parcels in or near clusters = 2 of 2" "$work/bem-0/log.solver"
+compareForces cyclicBem "$work/bem-0" "$work/bem-0.5" 1e-8
+compareForces cyclicBemRing "$work/bem-0" "$work/bem-ring" 1e-8
 
 # meshPoisson: the electrodes give the applied field, the near field adds
 # the dipoles. Two neutral dielectric spheres (radius a, epsilonR 5) on a

@@ -628,15 +628,6 @@ Foam::BemNearField<CloudType>::BemNearField
             << "Entry isolated " << isolated_ << " in " << dict.name().c_str()
             << " is not one of: inducedDipole none" << exit(FatalIOError);
     }
-    if (processorHalo::cyclicShifts(owner.mesh()).size())
-    {
-        WarningInFunction
-            << "nearField type bem in " << dict.name().c_str() << ": the "
-            << "mesh has cyclic patches; clusters do not form across them "
-            << "(a close pair through a cyclic patch gets the induced-dipole"
-            << " rung, isolated " << isolated_ << ", and the far field)"
-            << endl;
-    }
     Info<< "    BEM clusters: surface gaps below " << clusterGap_
         << " x the smaller semi-axis, " << nPatches_ << " patches per parcel,"
         << " isolated parcels: " << isolated_ << ", parcels near a cluster: "
@@ -704,12 +695,19 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
     const scalar rCut = sMax*(2 + clusterGap_);
     const scalar rNear = multipoleNeighbours_ ? this->rNearFor(dMax) : 0;
 
-    // This processor's parcels and the others' within reach of its box
+    // This processor's parcels and the others' within reach of its box,
+    // and their copies through the cyclic patches
+    const polyMesh& mesh = this->owner().mesh();
     const processorHalo halo
     (
-        processorHalo::processorBoxes(this->owner().mesh()),
+        processorHalo::processorBoxes(mesh),
         x,
-        max(rCut, rNear)
+        max(rCut, rNear),
+        processorHalo::translationCombinations
+        (
+            processorHalo::cyclicShifts(mesh)
+        ),
+        true
     );
     const pointField& xh = halo.points();
     const label n = x.size();
@@ -813,6 +811,12 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
         halo.updateHalo(key);
         halo.updateHalo(owner);
         halo.updateHalo(xMin);
+        // A copy sees the smallest member shifted as itself
+        const label nReal = nh - halo.nCopies();
+        forAll(halo.copyOf(), c)
+        {
+            xMin[nReal + c] += xh[nReal + c] - xh[halo.copyOf()[c]];
+        }
     }
     clusterKey = SubField<scalar>(key, n);
     solver = SubList<label>(owner, n);
@@ -913,6 +917,13 @@ void Foam::BemNearField<CloudType>::gatherParcels
         }
     }
     gp.sel.transfer(sel);
+    const List<vector> cyclic
+    (
+        processorHalo::translationCombinations
+        (
+            processorHalo::cyclicShifts(cloud.mesh())
+        )
+    );
     gp.halo.reset
     (
         new processorHalo
@@ -921,7 +932,9 @@ void Foam::BemNearField<CloudType>::gatherParcels
             gp.own(myX),
             // the halo takes points within the range of a box: a margin
             // for round-off at its edge
-            reach*(1 + 1e-9) + SMALL
+            reach*(1 + 1e-9) + SMALL,
+            cyclic,
+            true
         )
     );
     const processorHalo& halo = *gp.halo;
@@ -929,14 +942,24 @@ void Foam::BemNearField<CloudType>::gatherParcels
     // by one of them (its smallest member then in their box)
     const List<boundBox>& boxes = processorHalo::processorBoxes(cloud.mesh());
     DynamicList<label> nearProcs;
+    List<vector> shifts(1, Zero);
+    shifts.append(cyclic);
     forAll(boxes, proci)
     {
-        boundBox grown(boxes[proci]);
-        grown.min() -= vector::uniform(2*reach);
-        grown.max() += vector::uniform(2*reach);
-        if (proci != Pstream::myProcNo() && grown.overlaps(boxes[Pstream::myProcNo()]))
+        for (const vector& t : shifts)
         {
-            nearProcs.append(proci);
+            boundBox grown(boxes[proci]);
+            grown.min() += t - vector::uniform(2*reach);
+            grown.max() += t + vector::uniform(2*reach);
+            if
+            (
+                proci != Pstream::myProcNo()
+             && grown.overlaps(boxes[Pstream::myProcNo()])
+            )
+            {
+                nearProcs.append(proci);
+                break;
+            }
         }
     }
     gp.nearProcs.transfer(nearProcs);
@@ -1071,18 +1094,74 @@ void Foam::BemNearField<CloudType>::formClusters
     cs.clusters.setSize(mine.size());
     cs.clusterOf.setSize(N);
     cs.clusterOf = -1;
+    // Across cyclic patches a member may be here more than once (itself
+    // and its copies, adjacent in id order): the instance nearest to the
+    // cluster's smallest member, which is this processor's own, solves;
+    // the others count as members of a cluster solved elsewhere
+    DynamicList<label> otherInstances;
     label c = 0;
     for (auto& entry : mine)
     {
-        for (const label g : entry.second)
+        const DynamicList<label>& all = entry.second;
+        label anchor = -1;
+        for (const label g : all)
+        {
+            const labelPair id(gp.id(g));
+            if
+            (
+                g < gp.halo->nLocal()
+             && idKey(id.first(), id.second()) == entry.first
+            )
+            {
+                anchor = g;
+            }
+        }
+        if (anchor < 0)
+        {
+            FatalErrorInFunction
+                << "BEM cluster " << entry.first << " to be solved here "
+                << "without its smallest member" << abort(FatalError);
+        }
+        DynamicList<label> members(all.size());
+        forAll(all, k)
+        {
+            const label g = all[k];
+            if
+            (
+                members.size()
+             && gp.id(members.last()) == gp.id(g)
+            )
+            {
+                if
+                (
+                    magSqr(x[g] - x[anchor])
+                  < magSqr(x[members.last()] - x[anchor])
+                )
+                {
+                    otherInstances.append(members.last());
+                    members.last() = g;
+                }
+                else
+                {
+                    otherInstances.append(g);
+                }
+                continue;
+            }
+            members.append(g);
+        }
+        for (const label g : members)
         {
             cs.clusterOf[g] = c;
         }
-        cs.clusters[c++].transfer(entry.second);
+        cs.clusters[c++].transfer(members);
     }
     for (auto& entry : elsewhere)
     {
         entry.second = c++;
+    }
+    for (const label g : otherInstances)
+    {
+        cs.clusterOf[g] = c++;
     }
     for (label g = 0; g < N; ++g)
     {
