@@ -77,6 +77,14 @@ def sh(cmd, cwd, log):
         sys.exit(f"{cmd} failed in {cwd} (see {log}):\n{text[-2000:]}")
 
 
+def cells_per_unit(rung, ring):
+    """In the ring the mesh far field's halo (4 radii) must stay within
+    half a rank's extent, as in a long duct (at 2 ranks the strips on
+    either side are then different parcels): 20 cells per unit and radius
+    2 cells there, else 10"""
+    return 20 if ring and rung == "meshPoisson" else 10
+
+
 def make_case(case, P, n, rung, steps, seed=1, ring=False, cg=3):
     if os.path.exists(case):
         shutil.rmtree(case)
@@ -90,11 +98,7 @@ def make_case(case, P, n, rung, steps, seed=1, ring=False, cg=3):
 (
     (0 0 0) ({P} 0 0) ({P} 1 0) (0 1 0) (0 0 1) ({P} 0 1) ({P} 1 1) (0 1 1)
 );""", s, flags=re.S)
-    # In the ring the mesh far field's halo (4 radii) must stay within half
-    # a rank's extent, as in a long duct (at 2 ranks the strips on either
-    # side are then different parcels): 20 cells per unit, radius 2 cells
-    fine = ring and rung == "meshPoisson"
-    c = 20 if fine else 10
+    c = cells_per_unit(rung, ring)
     s = re.sub(r"blocks\s*\(.*?\);", f"blocks\n(\n    hex (0 1 2 3 4 5 6 7) ({c*P} {c} {c}) simpleGrading (1 1 1)\n);",
                s, flags=re.S)
     if rung == "periodic":
@@ -133,7 +137,7 @@ def make_case(case, P, n, rung, steps, seed=1, ring=False, cg=3):
     parcels = "\n".join("                { position (%.9g %.9g %.9g); d 1e-3; rho 1000;%s q %.9g; }"
                         % (r[0], r[1], r[2], eps, c) for r, c in zip(x, q))
     s = re.sub(r"parcels\s*\(.*?\n\s*\);", "parcels\n            (\n" + parcels + "\n            );", s, flags=re.S)
-    model = RUNGS[rung].replace("radius 0.25", "radius 0.1") if fine else RUNGS[rung]
+    model = RUNGS[rung].replace("radius 0.25", f"radius {2/c:g}") if c != 10 else RUNGS[rung]
     # cg iterations of the dipole solve every step (tolerance 1e-30,
     # maxIter cg: a warning each step), or 0: to the default tolerance
     model = model.replace(";CG", f"; tolerance 1e-30; maxIter {cg};" if cg else ";")
@@ -277,7 +281,7 @@ def main():
         duct = rung == "shortDuct"
         print(f"\n{rung}" + (f" (strong scaling: {a.n} parcels in all, per fluid step)" if duct
                               else f" (weak scaling: {a.n} parcels and "
-                              f"{8000 if a.ring and rung == 'meshPoisson' else 1000} cells per rank"
+                              f"{cells_per_unit(rung, a.ring)**3} cells per rank"
                               + (", a ring: cyclic in x)" if a.ring else ")")))
         print(f"| ranks | bytes/step per rank (mean) | (max) | messages/step per rank (mean) | all-reduces/step | all-to-alls/step | peak memory per rank [MB] (max) |")
         print("| --- | --- | --- | --- | --- | --- | --- |")

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meshPoisson.H"
-#include "processorCyclicPolyPatch.H"
 #include "cutoffPairs.H"
 #include "fvm.H"
 #include "fvc.H"
@@ -356,7 +355,7 @@ void Foam::meshPoisson::binCells()
 
 Foam::List<Foam::vector> Foam::meshPoisson::periodicTranslations() const
 {
-    return processorHalo::translationCombinations(periodicShifts_);
+    return processorHalo::cyclicTranslations(mesh_);
 }
 
 

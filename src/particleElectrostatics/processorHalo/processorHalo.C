@@ -27,6 +27,9 @@ class processorMeshBoxes
 
     List<vector> cyclicShifts_;
 
+    //- Their combinations (translationCombinations)
+    List<vector> cyclicTranslations_;
+
     wordList rotationalCyclics_;
 
     //- One translation per cyclic pair (owner side). A processor may hold
@@ -102,6 +105,8 @@ public:
         Pstream::gatherList(boxes_);
         Pstream::scatterList(boxes_);
         findCyclicShifts(mesh);
+        cyclicTranslations_ =
+            processorHalo::translationCombinations(cyclicShifts_);
     }
 
     const List<boundBox>& boxes() const
@@ -112,6 +117,11 @@ public:
     const List<vector>& cyclicShifts() const
     {
         return cyclicShifts_;
+    }
+
+    const List<vector>& cyclicTranslations() const
+    {
+        return cyclicTranslations_;
     }
 
     const wordList& rotationalCyclics() const
@@ -134,10 +144,11 @@ const Foam::List<Foam::boundBox>& Foam::processorHalo::processorBoxes
 }
 
 
-const Foam::List<Foam::vector>& Foam::processorHalo::cyclicShifts
-(
-    const polyMesh& mesh
-)
+namespace Foam
+{
+
+//- The mesh's boxes and translations, refusing rotational cyclic patches
+static const processorMeshBoxes& translationalCyclics(const polyMesh& mesh)
 {
     const processorMeshBoxes& m = processorMeshBoxes::New(mesh);
     if (m.rotationalCyclics().size())
@@ -147,7 +158,68 @@ const Foam::List<Foam::vector>& Foam::processorHalo::cyclicShifts
             << "rotational: the particle electrostatics sum across "
             << "translational cyclic patches only" << exit(FatalError);
     }
-    return m.cyclicShifts();
+    return m;
+}
+
+} // End namespace Foam
+
+
+const Foam::List<Foam::vector>& Foam::processorHalo::cyclicShifts
+(
+    const polyMesh& mesh
+)
+{
+    return translationalCyclics(mesh).cyclicShifts();
+}
+
+
+const Foam::List<Foam::vector>& Foam::processorHalo::cyclicTranslations
+(
+    const polyMesh& mesh
+)
+{
+    return translationalCyclics(mesh).cyclicTranslations();
+}
+
+
+Foam::scalar Foam::processorHalo::shortestCyclicPeriod(const polyMesh& mesh)
+{
+    scalar period = GREAT;
+    for (const vector& s : cyclicShifts(mesh))
+    {
+        period = min(period, mag(s));
+    }
+    return period;
+}
+
+
+bool Foam::processorHalo::reaches
+(
+    const List<boundBox>& boxes,
+    const label i,
+    const label j,
+    const scalar range,
+    const UList<vector>& translations
+)
+{
+    if (i == j || !boxes[i].valid() || !boxes[j].valid())
+    {
+        return false;
+    }
+    const vector margin(range, range, range);
+    const boundBox g(boxes[j].min() - margin, boxes[j].max() + margin);
+    if (g.overlaps(boxes[i]))
+    {
+        return true;
+    }
+    for (const vector& t : translations)
+    {
+        if (g.overlaps(boundBox(boxes[i].min() + t, boxes[i].max() + t)))
+        {
+            return true;
+        }
+    }
+    return false;
 }
 
 
@@ -276,6 +348,17 @@ void Foam::processorHalo::appendCopies
 }
 
 
+void Foam::processorHalo::updateHaloPoints(UList<point>& values) const
+{
+    updateHalo(values);
+    const label nReal = points_.size() - copyOf_.size();
+    forAll(copyOf_, c)
+    {
+        values[nReal + c] += points_[nReal + c] - points_[copyOf_[c]];
+    }
+}
+
+
 void Foam::processorHalo::exchangePoints
 (
     const List<boundBox>& boxes,
@@ -286,10 +369,6 @@ void Foam::processorHalo::exchangePoints
 {
     const label me = Pstream::myProcNo();
     const vector margin(range, range, range);
-    const auto grown = [&](const label j)
-    {
-        return boundBox(boxes[j].min() - margin, boxes[j].max() + margin);
-    };
     // The shifts of a point that may lie within reach: itself and its
     // cyclic copies
     List<vector> shifts(translations.size() + 1, Zero);
@@ -297,38 +376,24 @@ void Foam::processorHalo::exchangePoints
     {
         shifts[k + 1] = translations[k];
     }
-    // i sends to j: some shift of i's box overlaps j's grown box (the
-    // same test on both sides)
-    const auto sends = [&](const label i, const label j)
-    {
-        if (i == j || !boxes[i].valid() || !boxes[j].valid())
-        {
-            return false;
-        }
-        const boundBox g(grown(j));
-        for (const vector& t : shifts)
-        {
-            if (g.overlaps(boundBox(boxes[i].min() + t, boxes[i].max() + t)))
-            {
-                return true;
-            }
-        }
-        return false;
-    };
 
     // The points, with their counts between the neighbours only (both
-    // sides know who they are: sends() is symmetric, the shifts coming
-    // in pairs)
+    // sides know who they are: reaches() is symmetric, the translations
+    // coming in pairs)
     DynamicList<label> neighbours;
     List<List<point>> sendPoints(Pstream::nProcs()), recvPoints;
     forAll(boxes, proci)
     {
-        if (!sends(me, proci))
+        if (!reaches(boxes, me, proci, range, translations))
         {
             continue;
         }
         neighbours.append(proci);
-        const boundBox g(grown(proci));
+        const boundBox g
+        (
+            boxes[proci].min() - margin,
+            boxes[proci].max() + margin
+        );
         DynamicList<label> idx;
         forAll(x, i)
         {

@@ -224,20 +224,15 @@ Foam::CoulombElectrostatics<CloudType>::CoulombElectrostatics
     // The pairs through a cyclic patch come from the copies shifted by
     // one period (gatherHalo): all of them while rCut is at most the
     // shortest period
-    const List<vector> shifts
-    (
-        cutoff ? processorHalo::cyclicShifts(owner.mesh()) : List<vector>()
-    );
-    for (const vector& s : shifts)
+    const scalar period =
+        cutoff ? processorHalo::shortestCyclicPeriod(owner.mesh()) : GREAT;
+    if (rCut_ > period)
     {
-        if (rCut_ > mag(s))
-        {
-            FatalIOErrorInFunction(this->coeffDict())
-                << "Entry rCut = " << rCut_ << " in "
-                << this->coeffDict().name().c_str() << " exceeds the "
-                << "cyclic period " << mag(s) << " of the mesh: it must be "
-                << "in (0, " << mag(s) << "]" << exit(FatalIOError);
-        }
+        FatalIOErrorInFunction(this->coeffDict())
+            << "Entry rCut = " << rCut_ << " in "
+            << this->coeffDict().name().c_str() << " exceeds the "
+            << "cyclic period " << period << " of the mesh: it must be "
+            << "in (0, " << period << "]" << exit(FatalIOError);
     }
 }
 

@@ -172,10 +172,7 @@ void Foam::ElectrostaticsModel<CloudType>::gatherHalo
         processorHalo::processorBoxes(mesh),
         xLocal,
         range,
-        processorHalo::translationCombinations
-        (
-            processorHalo::cyclicShifts(mesh)
-        ),
+        processorHalo::cyclicTranslations(mesh),
         true
     );
     x = halo.points();

@@ -279,11 +279,8 @@ Foam::ElectrostaticsSurvey<CloudType>::candidates
     const bool periodic = (kind_ == sceneKind::periodic);
     // The cutoff sums take the copies through cyclic patches one period
     // away: rCut at most the shortest period
-    scalar minPeriod = GREAT;
-    for (const vector& s : processorHalo::cyclicShifts(cloud_.mesh()))
-    {
-        minPeriod = min(minPeriod, mag(s));
-    }
+    const scalar minPeriod =
+        processorHalo::shortestCyclicPeriod(cloud_.mesh());
     if (!periodic)
     {
         // The O(N^2) sum only where it takes seconds, not hours

@@ -703,10 +703,7 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
         processorHalo::processorBoxes(mesh),
         x,
         max(rCut, rNear),
-        processorHalo::translationCombinations
-        (
-            processorHalo::cyclicShifts(mesh)
-        ),
+        processorHalo::cyclicTranslations(mesh),
         true
     );
     const pointField& xh = halo.points();
@@ -810,13 +807,7 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
         }
         halo.updateHalo(key);
         halo.updateHalo(owner);
-        halo.updateHalo(xMin);
-        // A copy sees the smallest member shifted as itself
-        const label nReal = nh - halo.nCopies();
-        forAll(halo.copyOf(), c)
-        {
-            xMin[nReal + c] += xh[nReal + c] - xh[halo.copyOf()[c]];
-        }
+        halo.updateHaloPoints(xMin);
     }
     clusterKey = SubField<scalar>(key, n);
     solver = SubList<label>(owner, n);
@@ -917,13 +908,8 @@ void Foam::BemNearField<CloudType>::gatherParcels
         }
     }
     gp.sel.transfer(sel);
-    const List<vector> cyclic
-    (
-        processorHalo::translationCombinations
-        (
-            processorHalo::cyclicShifts(cloud.mesh())
-        )
-    );
+    const List<vector>& cyclic =
+        processorHalo::cyclicTranslations(cloud.mesh());
     gp.halo.reset
     (
         new processorHalo
@@ -942,24 +928,17 @@ void Foam::BemNearField<CloudType>::gatherParcels
     // by one of them (its smallest member then in their box)
     const List<boundBox>& boxes = processorHalo::processorBoxes(cloud.mesh());
     DynamicList<label> nearProcs;
-    List<vector> shifts(1, Zero);
-    shifts.append(cyclic);
     forAll(boxes, proci)
     {
-        for (const vector& t : shifts)
-        {
-            boundBox grown(boxes[proci]);
-            grown.min() += t - vector::uniform(2*reach);
-            grown.max() += t + vector::uniform(2*reach);
-            if
+        if
+        (
+            processorHalo::reaches
             (
-                proci != Pstream::myProcNo()
-             && grown.overlaps(boxes[Pstream::myProcNo()])
+                boxes, Pstream::myProcNo(), proci, 2*reach, cyclic
             )
-            {
-                nearProcs.append(proci);
-                break;
-            }
+        )
+        {
+            nearProcs.append(proci);
         }
     }
     gp.nearProcs.transfer(nearProcs);

@@ -211,16 +211,17 @@ void Foam::InducedDipoleNearField<CloudType>::setNearRadius
             << " diameter " << dMax << " of the largest polarisable parcel:"
             << " pairs in contact would be left out" << exit(FatalIOError);
     }
-    for (const vector& s : processorHalo::cyclicShifts(this->owner().mesh()))
+    const scalar period =
+        cmptMax(L) > 0
+      ? GREAT
+      : processorHalo::shortestCyclicPeriod(this->owner().mesh());
+    if (rNear_ > period)
     {
-        if (!(cmptMax(L) > 0) && rNear_ > mag(s))
-        {
-            FatalIOErrorInFunction(this->dict())
-                << "Entry rNear = " << rNear_ << " in "
-                << this->dict().name().c_str() << " exceeds the cyclic "
-                << "period " << mag(s) << " of the mesh: it must be at most "
-                << mag(s) << exit(FatalIOError);
-        }
+        FatalIOErrorInFunction(this->dict())
+            << "Entry rNear = " << rNear_ << " in "
+            << this->dict().name().c_str() << " exceeds the cyclic "
+            << "period " << period << " of the mesh: it must be at most "
+            << period << exit(FatalIOError);
     }
     if (cmptMax(L) > 0 && !(2*rNear_ < cmptMin(L)))
     {
@@ -263,12 +264,7 @@ Foam::InducedDipoleNearField<CloudType>::gatherHalo
     const bool periodic = cmptMax(L) > 0;
     const List<vector> cyclic
     (
-        periodic
-      ? List<vector>()
-      : processorHalo::translationCombinations
-        (
-            processorHalo::cyclicShifts(mesh)
-        )
+        periodic ? List<vector>() : processorHalo::cyclicTranslations(mesh)
     );
     std::unique_ptr<processorHalo> halo;
     if (Pstream::parRun() || cyclic.size())
