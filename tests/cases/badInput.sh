@@ -227,6 +227,9 @@ badCase negativeNonOrthCorrectors 'electrostaticsModel directCoulomb;' \
 badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldRadius 1; }' \
     'Entry selfFieldRadius = 1 in .* must be 0 .* or in \[2, 10\] shape radii'
+badCase negativeLatticeCorrectionSources 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; latticeCorrectionSources -1; }' \
+    'Entry latticeCorrectionSources = -1 in .* must be >= 0'
 badCase unknownSelfFieldSampling 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldSampling cells; }' \
     'Entry selfFieldSampling = cells in .* must be one of 3\(points charges auto\)'

@@ -565,11 +565,17 @@ void Foam::meshPoisson::collectWallFaces()
     reduce(cellRadius, maxOp<scalar>());
     const scalar patchReach =
         selfFieldRadius_ > 0 ? selfFieldPatchRadius() + cellRadius : 0;
+    // and the images of the lattice correction (addLatticeCorrection)
+    const scalar latticeReach =
+        lattice_.valid() ? 0.5*latticeImageReach() + wallRMax_ : 0;
     const processorHalo faceHalo
     (
         boxes,
         wallC_,
-        (4*radius_ + max(2*radius_ + wallRMax_, patchReach))*(1 + 1e-9)
+        (
+            4*radius_
+          + max(max(2*radius_ + wallRMax_, patchReach), latticeReach)
+        )*(1 + 1e-9)
       + VSMALL
     );
     wallC_ = faceHalo.points();
@@ -730,67 +736,6 @@ void Foam::meshPoisson::wallTangentPlane
 }
 
 
-void Foam::meshPoisson::appendImages
-(
-    const label i,
-    const point& xi,
-    const scalar qi,
-    const label oi,
-    const UList<vector>& pn,
-    const UList<scalar>& pd,
-    const UList<scalar>& ps,
-    const labelUList& order,
-    const label np,
-    DynamicList<point>& gx,
-    DynamicList<scalar>& gq,
-    DynamicList<label>& go
-)
-{
-    // Subsets of the planes: single reflections always; compositions
-    // only of mutually perpendicular planes (exact there)
-    for (label mask = 1; mask < (1 << np); ++mask)
-    {
-        // y = T x + b from the reflections y -> (I - 2 n n) y + 2 (p.n) n
-        tensor T(tensor::I);
-        vector b(Zero);
-        scalar sgn = 1;
-        bool ok = true;
-        for (label a = 0; a < np && ok; ++a)
-        {
-            if (!(mask & (1 << a)))
-            {
-                continue;
-            }
-            for (label b = a + 1; b < np; ++b)
-            {
-                if
-                (
-                    (mask & (1 << b))
-                 && mag(pn[order[a]] & pn[order[b]]) > 1e-6
-                )
-                {
-                    ok = false;
-                }
-            }
-            const label k = order[a];
-            // The plane through p = x + d n
-            const point p(xi + pd[k]*pn[k]);
-            const tensor H(tensor::I - 2*sqr(pn[k]));
-            T = H & T;
-            b = (H & b) + 2*(p & pn[k])*pn[k];
-            sgn *= ps[k];
-        }
-        if (ok)
-        {
-            gx.append((T & xi) + b);
-            gq.append(sgn*qi);
-            go.append(oi);
-            addTransform(i, T, b, sgn);
-        }
-    }
-}
-
-
 void Foam::meshPoisson::distinctWallPlanes
 (
     const point& xi,
@@ -843,6 +788,123 @@ void Foam::meshPoisson::distinctWallPlanes
 }
 
 
+template<class Visit>
+void Foam::meshPoisson::forWallImages
+(
+    const UList<point>& x,
+    const scalar reach,
+    Visit&& visit
+) const
+{
+    // The walls within reach of each point: the distinct planes of its
+    // faces in range, each a wall's tangent plane at the point's foot
+    // (not the face's chord plane: see fitWallSurfaces), the three
+    // nearest
+    if (wallC_.empty() || x.empty())
+    {
+        return;
+    }
+    const label n0 = x.size();
+    DynamicList<labelPair> pairs;
+    forPairsWithinCutoff
+    (
+        x, wallC_, reach + wallRMax_, -1,
+        [&](const label t, const label f, const vector& r, const scalar)
+        {
+            // r = x - c_f; the wall lies at distance d along n_f
+            const scalar d = -(r & wallN_[f]);
+            if (d > 0 && d < reach && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
+            {
+                pairs.append(labelPair(t, f));
+            }
+        }
+    );
+    if (pairs.empty())
+    {
+        return;
+    }
+    // forPairsWithinCutoff visits the targets in order
+    labelList start(n0 + 1, 0);
+    for (const labelPair& tf : pairs)
+    {
+        ++start[tf.first() + 1];
+    }
+    for (label i = 0; i < n0; ++i)
+    {
+        start[i + 1] += start[i];
+    }
+    DynamicList<vector> pn;
+    DynamicList<scalar> pd, ps;
+    DynamicList<label> pf;
+    for (label i = 0; i < n0; ++i)
+    {
+        if (start[i + 1] == start[i])
+        {
+            continue;
+        }
+        DynamicList<label> faces(start[i + 1] - start[i]);
+        for (label j = start[i]; j < start[i + 1]; ++j)
+        {
+            faces.append(pairs[j].second());
+        }
+        distinctWallPlanes(x[i], faces, pn, pd, ps, pf);
+        if (pn.empty())
+        {
+            continue;
+        }
+        forAll(pn, k)
+        {
+            point p;
+            wallTangentPlane(pf[k], x[i], p, pn[k]);
+            pd[k] = (p - x[i]) & pn[k];
+        }
+        labelList order;
+        sortedOrder(pd, order);
+        const label np = min(order.size(), label(3));
+
+        // Subsets of the planes: single reflections always; compositions
+        // only of mutually perpendicular planes (exact there)
+        for (label mask = 1; mask < (1 << np); ++mask)
+        {
+            // y = T x + b from the reflections y -> (I - 2 n n) y + 2 (p.n) n
+            tensor T(tensor::I);
+            vector b(Zero);
+            scalar sgn = 1;
+            bool ok = true;
+            for (label a = 0; a < np && ok; ++a)
+            {
+                if (!(mask & (1 << a)))
+                {
+                    continue;
+                }
+                for (label c = a + 1; c < np; ++c)
+                {
+                    if
+                    (
+                        (mask & (1 << c))
+                     && mag(pn[order[a]] & pn[order[c]]) > 1e-6
+                    )
+                    {
+                        ok = false;
+                    }
+                }
+                const label k = order[a];
+                // The plane through p = x + d n
+                const point p(x[i] + pd[k]*pn[k]);
+                const tensor H(tensor::I - 2*sqr(pn[k]));
+                T = H & T;
+                b = (H & b) + 2*(p & pn[k])*pn[k];
+                sgn *= ps[k];
+            }
+            if (ok)
+            {
+                visit(i, T, b, sgn);
+            }
+        }
+    }
+}
+
+
 void Foam::meshPoisson::addWallImages
 (
     pointField& x,
@@ -876,78 +938,21 @@ void Foam::meshPoisson::addWallImages
         }
     }
 
-    // The (charge, wall face) pairs in range (2R: the shape reaches R
-    // beyond, the correction of its image 2R), grouped by charge
-    DynamicList<labelPair> pairs;
-    forPairsWithinCutoff
-    (
-        xHere, wallC_, 2*R + wallRMax_, -1,
-        [&](const label t, const label f, const vector& r, const scalar)
-        {
-            // r = x - c_f; the wall lies at distance d along n_f
-            const scalar d = -(r & wallN_[f]);
-            if (d > 0 && d < 2*R && mag(r + d*wallN_[f]) <= 1.001*wallR_[f])
-            {
-                pairs.append(labelPair(here[t], f));
-            }
-        }
-    );
-    if (pairs.empty())
-    {
-        return;
-    }
-    // forPairsWithinCutoff visits the targets in order
-    labelList start(n0 + 1, 0);
-    for (const labelPair& tf : pairs)
-    {
-        ++start[tf.first() + 1];
-    }
-    for (label i = 0; i < n0; ++i)
-    {
-        start[i + 1] += start[i];
-    }
-
     DynamicList<point> gx(x);
     DynamicList<scalar> gq(q);
     DynamicList<label> go(origin);
-    DynamicList<vector> pn;
-    DynamicList<scalar> pd, ps;
-    DynamicList<label> pf;
-    for (label i = 0; i < n0; ++i)
-    {
-        if (start[i + 1] == start[i])
+    forWallImages
+    (
+        xHere, 2*R,
+        [&](const label h, const tensor& T, const vector& b, const scalar sgn)
         {
-            continue;
+            const label i = here[h];
+            gx.append((T & x[i]) + b);
+            gq.append(sgn*q[i]);
+            go.append(origin[i]);
+            addTransform(i, T, b, sgn);
         }
-        // Distinct planes (normal, distance, sign) of the faces in range
-        DynamicList<label> faces(start[i + 1] - start[i]);
-        for (label j = start[i]; j < start[i + 1]; ++j)
-        {
-            faces.append(pairs[j].second());
-        }
-        distinctWallPlanes(x[i], faces, pn, pd, ps, pf);
-        if (pn.empty())
-        {
-            continue;
-        }
-        // Each wall's tangent plane at the charge's foot (not the face's
-        // chord plane: see fitWallSurfaces)
-        forAll(pn, k)
-        {
-            point p;
-            wallTangentPlane(pf[k], x[i], p, pn[k]);
-            pd[k] = (p - x[i]) & pn[k];
-        }
-        // Keep the three nearest
-        labelList order;
-        sortedOrder(pd, order);
-        const label np = min(order.size(), label(3));
-
-        appendImages
-        (
-            i, x[i], q[i], origin[i], pn, pd, ps, order, np, gx, gq, go
-        );
-    }
+    );
     x.transfer(gx);
     q.transfer(gq);
     origin.transfer(go);
@@ -1636,6 +1641,10 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     nonOrthTolerance_(readNonOrthTolerance()),
     selfFieldRadius_(readSelfFieldRadius()),
     selfFieldSampling_(readSelfFieldSampling()),
+    latticeMaxSources_
+    (
+        coeffs.lookupOrDefault<label>("latticeCorrectionSources", 8)
+    ),
     gradient_
     (
         mesh,
@@ -1645,6 +1654,8 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             potentialGradient::schemeType::leastSquares
         )
     ),
+    latticeH_(0),
+    latticeOrigin_(Zero),
     nEvaluations_(0),
     solved_(false),
     periodicShifts_(),
@@ -1711,6 +1722,14 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             << " shape with its deposition weights (momentum conserving);"
             << " remove the entry" << exit(FatalIOError);
     }
+    if (latticeMaxSources_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry latticeCorrectionSources = " << latticeMaxSources_
+            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
+            << " sources within 2 radii of a charge for which the lattice"
+            << " correction is made; 0: none)" << exit(FatalIOError);
+    }
     if (solveInterval_ < 1)
     {
         FatalIOErrorInFunction(coeffs_)
@@ -1736,6 +1755,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
 
     if (correction_ == correctionType::shaped)
     {
+        setUpLattice();
         collectWallFaces();
     }
 
@@ -1751,6 +1771,12 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
             Info<< ", self field removed at the "
                 << selfFieldSamplingTypeNames[selfFieldSampling_]
                 << " (patch radius " << selfFieldPatchRadius() << " m)";
+        }
+        if (lattice_.valid())
+        {
+            Info<< ", lattice correction (cubic cells of " << latticeH_
+                << " m) of charges with at most " << latticeMaxSources_
+                << " sources within 2R";
         }
     }
     Info<< "), "
@@ -1935,6 +1961,266 @@ Foam::scalar Foam::meshPoisson::haloRange() const
 }
 
 
+Foam::scalar Foam::meshPoisson::latticeSpacing() const
+{
+    const scalarField& V = mesh_.V().field();
+    const scalar h =
+        Foam::cbrt(returnReduce(V.size() ? V[0] : 0, maxOp<scalar>()));
+    bool cubic = h > 0;
+    const scalar tol = 1e-6*h;
+    for (const scalar v : V)
+    {
+        cubic = cubic && mag(v - pow3(h)) <= 3*tol*sqr(h);
+    }
+    const vectorField& C = mesh_.C().primitiveField();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const scalarField& magSf = mesh_.magSf().primitiveField();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    forAll(nei, f)
+    {
+        cubic =
+            cubic
+         && mag(magSf[f] - sqr(h)) <= 2*tol*h
+         && mag(C[nei[f]] - C[own[f]] - (h/magSf[f])*Sf[f]) <= tol;
+    }
+    for (const fvPatch& p : mesh_.boundary())
+    {
+        if (isA<emptyPolyPatch>(p.patch()))
+        {
+            cubic = false;
+            continue;
+        }
+        // Coupled patches: the neighbouring cell's centre, h away;
+        // others: the face centre, h/2 away
+        const scalar d = p.coupled() ? h : h/2;
+        const vectorField delta(p.delta());
+        const vectorField n(p.nf());
+        forAll(p, i)
+        {
+            cubic =
+                cubic
+             && mag(p.magSf()[i] - sqr(h)) <= 2*tol*h
+             && mag(delta[i] - d*n[i]) <= tol;
+        }
+    }
+    return returnReduce(cubic, andOp<bool>()) ? h : 0;
+}
+
+
+void Foam::meshPoisson::setUpLattice()
+{
+    // Only where it is exact (the mesh is the lattice; a planar wall on
+    // the cells' faces images the lattice onto itself) and the shape at
+    // most 4 cells (its cost per pair grows as (R/h)^6; at 4 cells the
+    // lattice's own error is within a few %)
+    if (latticeMaxSources_ == 0)
+    {
+        return;
+    }
+    const scalar h = latticeSpacing();
+    if (!(h > 0) || radius_ > 4*h*(1 + 1e-9))
+    {
+        return;
+    }
+    latticeH_ = h;
+    latticeOrigin_ = gMin(mesh_.points());
+    // Offsets between the cells of two shapes (within R of their centres)
+    // whose centres lie within 4R
+    lattice_.reset
+    (
+        new latticeGreensFunction
+        (
+            label(std::ceil((latticeImageReach() + 2*radius_)/h)) + 2
+        )
+    );
+}
+
+
+Foam::scalar Foam::meshPoisson::latticeImageReach() const
+{
+    // The lattice's error of a pair falls as (h/r)^2: about 1 % of the
+    // pair's field at 16 cells (latticePairError.py)
+    return max(4*radius_, 16*latticeH_);
+}
+
+
+void Foam::meshPoisson::addLatticeCorrection
+(
+    const UList<point>& xT,
+    const labelUList& nNear
+)
+{
+    // On a uniform mesh the mesh's field of one S2 shape on another is the
+    // lattice's (latticeGreensFunction), the walls' response that of the
+    // images (a planar wall on the cells' faces maps the lattice onto
+    // itself). At 2-3 cells per radius that is off by several % within
+    // about 4R and by ~1 % at 16 cells, scattered with the shapes'
+    // positions in their cells (the 7-point Laplacian's truncation error;
+    // applications/benchmarks/meshFarField/latticePairError.py). Here it is
+    // replaced by the exact S2-S2 field (H&E Eq. 8-73) for the charges
+    // within 4R (the halo) and their images and the target's own within
+    // latticeImageReach, at a cost of (shape cells)^2 per pair: for
+    // targets with at most latticeMaxSources_ sources within 2R, where a
+    // pair's error is a large part of the field (isolated charges, pairs,
+    // charges near walls; in a dense cloud many sources share the field)
+    DynamicList<label> targets;
+    DynamicList<point> xTargets;
+    forAll(xT, t)
+    {
+        if (nNear[t] <= latticeMaxSources_)
+        {
+            targets.append(t);
+            xTargets.append(xT[t]);
+        }
+    }
+    if (nEvaluations_ == 1)
+    {
+        Info<< "    Lattice correction: "
+            << returnReduce(targets.size(), sumOp<label>()) << " of "
+            << returnReduce(xT.size(), sumOp<label>()) << " charges (at most "
+            << latticeMaxSources_ << " sources within 2R)" << endl;
+    }
+    if (targets.empty())
+    {
+        return;
+    }
+    const scalar R = radius_;
+
+    // Each target's sources: the instances of the charges (themselves and
+    // their cyclic translations) within 4R and their images within reach,
+    // the target's own images. Made here from the charges, not taken from
+    // the deposited copies and images (those reach less far, and differ
+    // between serial and parallel runs); an instance's images are its
+    // charge's, translated
+    const label nReal = nRealSources_;
+    List<vector> shifts(1, Zero);
+    shifts.append(periodicTranslations());
+    pointField xInst(nReal*shifts.size());
+    forAll(shifts, k)
+    {
+        for (label i = 0; i < nReal; ++i)
+        {
+            xInst[k*nReal + i] = xs_[i] + shifts[k];
+        }
+    }
+    DynamicList<labelPair> charges;
+    forAll(targets, t)
+    {
+        charges.append(labelPair(t, targets[t]));
+    }
+    forPairsWithinCutoff
+    (
+        xTargets, xInst, 4*R, -1,
+        [&](const label t, const label s, const vector&, const scalar r2)
+        {
+            if (s != targets[t] && r2 > 0)
+            {
+                charges.append(labelPair(t, s));
+            }
+        }
+    );
+    // The images of the charges involved, at their own positions
+    labelList slot(nReal, -1);
+    DynamicList<point> xImaged;
+    for (const labelPair& c : charges)
+    {
+        const label i = c.second() % nReal;
+        if (slot[i] < 0)
+        {
+            slot[i] = xImaged.size();
+            xImaged.append(xs_[i]);
+        }
+    }
+    const scalar reach = latticeImageReach();
+    DynamicList<label> imageOf;
+    DynamicList<point> xImage;
+    DynamicList<scalar> signImage;
+    forWallImages
+    (
+        xImaged, 0.5*reach,
+        [&](const label j, const tensor& T, const vector& b, const scalar sgn)
+        {
+            imageOf.append(j);
+            xImage.append((T & xImaged[j]) + b);
+            signImage.append(sgn);
+        }
+    );
+    // forWallImages visits the points in order
+    labelList imageStart(xImaged.size() + 1, 0);
+    for (const label j : imageOf)
+    {
+        ++imageStart[j + 1];
+    }
+    for (label j = 0; j < xImaged.size(); ++j)
+    {
+        imageStart[j + 1] += imageStart[j];
+    }
+    DynamicList<label> target;
+    DynamicList<point> xSource;
+    DynamicList<scalar> qSource;
+    for (const labelPair& c : charges)
+    {
+        const label t = c.first();
+        const label i = c.second() % nReal;
+        const vector& shift = shifts[c.second()/nReal];
+        if (c.second() != targets[t])
+        {
+            target.append(t);
+            xSource.append(xInst[c.second()]);
+            qSource.append(qs_[i]);
+        }
+        for (label j = imageStart[slot[i]]; j < imageStart[slot[i] + 1]; ++j)
+        {
+            const point y(xImage[j] + shift);
+            if (magSqr(y - xTargets[t]) < sqr(reach))
+            {
+                target.append(t);
+                xSource.append(y);
+                qSource.append(signImage[j]*qs_[i]);
+            }
+        }
+    }
+
+    const scalar h = latticeH_;
+    const scalar Rc = R/h;
+    const scalar k = pairwiseCoulomb(epsilonR_).k();
+    // 1/(eps h^2): the lattice field's unit
+    const scalar unit = 4*constant::mathematical::pi*k/sqr(h);
+    const auto latticePosition = [&](const point& x)
+    {
+        return vector((x - latticeOrigin_)/h) - vector::one/2;
+    };
+    DynamicList<labelVector> cellsT, cellsS;
+    DynamicList<scalar> wT, wS;
+    label shaped = -1;
+    forAll(target, j)
+    {
+        const label t = target[j];
+        const vector r(xTargets[t] - xSource[j]);
+        const scalar r2 = magSqr(r);
+        if (r2 == 0)
+        {
+            continue;
+        }
+        if (shaped != t)
+        {
+            latticeGreensFunction::shape
+            (
+                latticePosition(xTargets[t]), Rc, cellsT, wT
+            );
+            shaped = t;
+        }
+        latticeGreensFunction::shape(latticePosition(xSource[j]), Rc, cellsS, wS);
+        const scalar rm = std::sqrt(r2);
+        const vector exact = (k*(1 - shapedCorrection(rm/R))/(r2*rm))*r;
+        farField_[targets[t]] +=
+            qSource[j]
+           *(exact - unit*lattice_->pairField(cellsT, wT, cellsS, wS));
+    }
+}
+
+
 void Foam::meshPoisson::update
 (
     const UList<point>& x,
@@ -2083,6 +2369,7 @@ void Foam::meshPoisson::addNearField
                 shapeFresh_ = true;
             }
             farField_ = SubList<vector>(shapeField_, xT.size());
+            labelList nNear(lattice_.valid() ? xT.size() : 0, 0);
             forPairsWithinCutoff
             (
                 xT, xs, 2*R, myStart,
@@ -2092,8 +2379,16 @@ void Foam::meshPoisson::addNearField
                     {
                         farField_[t] += correction(s, r, r2);
                     }
+                    if (nNear.size())
+                    {
+                        ++nNear[t];
+                    }
                 }
             );
+            if (lattice_.valid())
+            {
+                addLatticeCorrection(xT, nNear);
+            }
             farValid_ = true;
         }
 
