@@ -147,6 +147,42 @@ else:
     report("smallRadii.parallel", d < 1e-7,
            f"2 processors vs serial, radius 2 cells: max |dE|/max|E| = {d:.1e}, tol 1e-7")
 
+# 1g. Where the lattice correction applies: the box (its log names it), not
+#     an L-shaped domain of the same cubic cells (eight boundary planes: a
+#     reentrant edge is no image plane)
+LSHAPE = """
+scale 1;
+vertices ((0 0 0) (0.5 0 0) (1 0 0) (1 0.5 0) (0.5 0.5 0) (0.5 1 0) (0 1 0) (0 0.5 0)
+          (0 0 1) (0.5 0 1) (1 0 1) (1 0.5 1) (0.5 0.5 1) (0.5 1 1) (0 1 1) (0 0.5 1));
+blocks (hex (0 1 4 7 8 9 12 15) (8 8 16) simpleGrading (1 1 1)
+        hex (1 2 3 4 9 10 11 12) (8 8 16) simpleGrading (1 1 1)
+        hex (7 4 5 6 15 12 13 14) (8 8 16) simpleGrading (1 1 1));
+boundary
+(
+    walls
+    {
+        type wall;
+        faces ((0 8 15 7) (7 15 14 6) (2 3 11 10) (0 1 9 8) (1 2 10 9)
+               (4 12 11 3) (4 5 13 12) (5 6 14 13) (0 7 4 1) (1 4 3 2)
+               (7 6 5 4) (8 9 12 15) (9 10 11 12) (15 12 13 14));
+    }
+);
+"""
+cl = FarFieldCase(f"{work}/latticeLShape", np.array([[0.25, 0.25, 0.5]]), q1, 1.0, 16,
+                  "meshPoisson", "radius 0.125;", blockMesh=LSHAPE)
+cb = FarFieldCase(f"{work}/latticeBox", np.array([[0.25, 0.25, 0.5]]), q1, 1.0, 16,
+                  "meshPoisson", "radius 0.125;")
+try:
+    cl.run()
+    cb.run()
+    onL = "lattice correction (cubic cells" in cl.log()
+    onBox = "lattice correction (cubic cells" in cb.log()
+except RuntimeError as err:
+    print(f"    {err}")
+    onL, onBox = True, False
+report("smallRadii.where", onBox and not onL,
+       f"lattice correction on the uniform box: {onBox}, on the L-shaped domain of the same cells: {onL}")
+
 # 2-4. 100 random charges of both signs
 rng = np.random.default_rng(1)
 x = 0.05 + 0.9*rng.random((100, 3)); q = 1e-9*(2*rng.random(100) - 1)

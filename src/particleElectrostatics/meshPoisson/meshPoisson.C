@@ -20,6 +20,7 @@
 #include "polyMeshTools.H"
 #include "syncTools.H"
 #include "PstreamBuffers.H"
+#include "facePlanes.H"
 
 #include <Eigen/QR>
 
@@ -2004,7 +2005,29 @@ Foam::scalar Foam::meshPoisson::latticeSpacing() const
              && mag(delta[i] - d*n[i]) <= tol;
         }
     }
-    return returnReduce(cubic, andOp<bool>()) ? h : 0;
+    // The boundary's faces on at most six planes (a box or a duct): the
+    // images of a plane are the lattice's, but a stepped wall (a
+    // castellated snappyHexMesh) is not its images' planes
+    facePlanes planes(1e-6, tol);
+    for (const fvPatch& p : mesh_.boundary())
+    {
+        if (p.coupled() || !cubic)
+        {
+            continue;
+        }
+        const vectorField n(p.nf());
+        forAll(p, i)
+        {
+            planes.insert(n[i], p.Cf()[i]);
+            cubic = cubic && planes.size() <= 6;
+        }
+    }
+    if (!returnReduce(cubic, andOp<bool>()))
+    {
+        return 0;
+    }
+    planes.mergeProcessors();
+    return planes.size() <= 6 ? h : 0;
 }
 
 
@@ -2045,48 +2068,16 @@ Foam::scalar Foam::meshPoisson::latticeImageReach() const
 }
 
 
-void Foam::meshPoisson::addLatticeCorrection
+void Foam::meshPoisson::latticeSources
 (
-    const UList<point>& xT,
-    const labelUList& nNear
-)
+    const labelUList& targets,
+    const UList<point>& xTargets,
+    DynamicList<label>& target,
+    DynamicList<point>& xSource,
+    DynamicList<scalar>& qSource
+) const
 {
-    // On a uniform mesh the mesh's field of one S2 shape on another is the
-    // lattice's (latticeGreensFunction), the walls' response that of the
-    // images (a planar wall on the cells' faces maps the lattice onto
-    // itself). At 2-3 cells per radius that is off by several % within
-    // about 4R and by ~1 % at 16 cells, scattered with the shapes'
-    // positions in their cells (the 7-point Laplacian's truncation error;
-    // applications/benchmarks/meshFarField/latticePairError.py). Here it is
-    // replaced by the exact S2-S2 field (H&E Eq. 8-73) for the charges
-    // within 4R (the halo) and their images and the target's own within
-    // latticeImageReach, at a cost of (shape cells)^2 per pair: for
-    // targets with at most latticeMaxSources_ sources within 2R, where a
-    // pair's error is a large part of the field (isolated charges, pairs,
-    // charges near walls; in a dense cloud many sources share the field)
-    DynamicList<label> targets;
-    DynamicList<point> xTargets;
-    forAll(xT, t)
-    {
-        if (nNear[t] <= latticeMaxSources_)
-        {
-            targets.append(t);
-            xTargets.append(xT[t]);
-        }
-    }
-    if (nEvaluations_ == 1)
-    {
-        Info<< "    Lattice correction: "
-            << returnReduce(targets.size(), sumOp<label>()) << " of "
-            << returnReduce(xT.size(), sumOp<label>()) << " charges (at most "
-            << latticeMaxSources_ << " sources within 2R)" << endl;
-    }
-    if (targets.empty())
-    {
-        return;
-    }
     const scalar R = radius_;
-
     // Each target's sources: the instances of the charges (themselves and
     // their cyclic translations) within 4R and their images within reach,
     // the target's own images. Made here from the charges, not taken from
@@ -2156,9 +2147,6 @@ void Foam::meshPoisson::addLatticeCorrection
     {
         imageStart[j + 1] += imageStart[j];
     }
-    DynamicList<label> target;
-    DynamicList<point> xSource;
-    DynamicList<scalar> qSource;
     for (const labelPair& c : charges)
     {
         const label t = c.first();
@@ -2181,6 +2169,55 @@ void Foam::meshPoisson::addLatticeCorrection
             }
         }
     }
+
+}
+
+
+void Foam::meshPoisson::addLatticeCorrection
+(
+    const UList<point>& xT,
+    const labelUList& nNear
+)
+{
+    // On a uniform mesh the mesh's field of one S2 shape on another is the
+    // lattice's (latticeGreensFunction), the walls' response that of the
+    // images (a planar wall on the cells' faces maps the lattice onto
+    // itself). At 2-3 cells per radius that is off by several % within
+    // about 4R and by ~1 % at 16 cells, scattered with the shapes'
+    // positions in their cells (the 7-point Laplacian's truncation error;
+    // applications/benchmarks/meshFarField/latticePairError.py). Here it is
+    // replaced by the exact S2-S2 field (H&E Eq. 8-73) for the charges
+    // within 4R (the halo) and their images and the target's own within
+    // latticeImageReach, at a cost of (shape cells)^2 per pair: for
+    // targets with at most latticeMaxSources_ sources within 2R, where a
+    // pair's error is a large part of the field (isolated charges, pairs,
+    // charges near walls; in a dense cloud many sources share the field)
+    DynamicList<label> targets;
+    DynamicList<point> xTargets;
+    forAll(xT, t)
+    {
+        if (nNear[t] <= latticeMaxSources_)
+        {
+            targets.append(t);
+            xTargets.append(xT[t]);
+        }
+    }
+    if (nEvaluations_ == 1)
+    {
+        Info<< "    Lattice correction: "
+            << returnReduce(targets.size(), sumOp<label>()) << " of "
+            << returnReduce(xT.size(), sumOp<label>()) << " charges (at most "
+            << latticeMaxSources_ << " sources within 2R)" << endl;
+    }
+    if (targets.empty())
+    {
+        return;
+    }
+    const scalar R = radius_;
+    DynamicList<label> target;
+    DynamicList<point> xSource;
+    DynamicList<scalar> qSource;
+    latticeSources(targets, xTargets, target, xSource, qSource);
 
     const scalar h = latticeH_;
     const scalar Rc = R/h;

@@ -6,6 +6,7 @@
 #include "wallPolyPatch.H"
 #include "wordRes.H"
 #include "unitConversion.H"
+#include "facePlanes.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -118,40 +119,18 @@ Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
     // featureAngle mean a curved wall (images need planes)
     const scalar distTol = tol*mag(mesh.bounds().span());
     const scalar cosFeature = Foam::cos(degToRad(featureAngle));
-    DynamicList<vector> normals;
-    DynamicList<point> points;
-    auto findPlane = [&](const vector& n, const point& x, const label start)
-    {
-        for (label g = start; g < normals.size(); ++g)
-        {
-            if
-            (
-                (n & normals[g]) > 1 - tol
-             && mag((n & x) - (normals[g] & points[g])) < distTol
-            )
-            {
-                return g;
-            }
-        }
-        return label(-1);
-    };
+    facePlanes planes(tol, distTol);
 
     for (const label patchi : ids)
     {
         const polyPatch& pp = pbm[patchi];
         const vectorField nf(pp.faceAreas()/mag(pp.faceAreas()));
         const vectorField::subField xf(pp.faceCentres());
-        const label start = normals.size();
+        const label start = planes.size();
         labelList plane(pp.size(), -1);
         forAll(pp, facei)
         {
-            plane[facei] = findPlane(nf[facei], xf[facei], start);
-            if (plane[facei] < 0)
-            {
-                plane[facei] = normals.size();
-                normals.append(nf[facei]);
-                points.append(xf[facei]);
-            }
+            plane[facei] = planes.insert(nf[facei], xf[facei], start);
         }
 
         scalar kink = -1;       // cosine of the smallest kink found
@@ -181,35 +160,15 @@ Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
 
     // The planes of all processors, merged in processor order: the same
     // list everywhere (and the same as in serial up to round-off)
-    List<pointField> allPoints(Pstream::nProcs());
-    List<vectorField> allNormals(Pstream::nProcs());
-    allPoints[Pstream::myProcNo()] = points;
-    allNormals[Pstream::myProcNo()] = normals;
-    Pstream::gatherList(allPoints);
-    Pstream::scatterList(allPoints);
-    Pstream::gatherList(allNormals);
-    Pstream::scatterList(allNormals);
-    normals.clear();
-    points.clear();
-    forAll(allPoints, proci)
-    {
-        forAll(allPoints[proci], g)
-        {
-            if (findPlane(allNormals[proci][g], allPoints[proci][g], 0) < 0)
-            {
-                normals.append(allNormals[proci][g]);
-                points.append(allPoints[proci][g]);
-            }
-        }
-    }
-    if (normals.empty())
+    planes.mergeProcessors();
+    if (!planes.size())
     {
         FatalIOErrorInFunction(coeffs)
             << "The grounded patches of " << coeffs.name().c_str()
             << " have no faces" << exit(FatalIOError);
     }
 
-    return groundedPlanes(points, normals, tol);
+    return groundedPlanes(planes.points(), planes.normals(), tol);
 }
 
 
