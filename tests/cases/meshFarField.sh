@@ -117,7 +117,7 @@ report("twoCharges", worst < 0.05, f"opposite charges 0.05, 0.15, 0.4 m apart, h
 #     edges, corners) and every pair of opposite charges 0.4 to 3.2 R
 #     apart (in the middle and near an edge) of
 #     applications/benchmarks/meshFarField/boxRadii.py within 5 % of the
-#     image solution (without it up to 17 %: doc/validation.md)
+#     image solution (without it up to 12.5 %: doc/validation.md)
 import boxRadii
 for cells in (2, 2.5):
     R = cells/32
