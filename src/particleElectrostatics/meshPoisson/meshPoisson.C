@@ -2228,9 +2228,18 @@ void Foam::meshPoisson::addLatticeCorrection
     {
         return vector((x - latticeOrigin_)/h) - vector::one/2;
     };
-    DynamicList<labelVector> cellsT, cellsS;
-    DynamicList<scalar> wT, wS;
-    label shaped = -1;
+    // Each target's shape once (its sources are not consecutive)
+    List<DynamicList<labelVector>> cellsT(targets.size());
+    List<DynamicList<scalar>> wT(targets.size());
+    forAll(targets, t)
+    {
+        latticeGreensFunction::shape
+        (
+            latticePosition(xTargets[t]), Rc, cellsT[t], wT[t]
+        );
+    }
+    DynamicList<labelVector> cellsS;
+    DynamicList<scalar> wS;
     forAll(target, j)
     {
         const label t = target[j];
@@ -2240,20 +2249,12 @@ void Foam::meshPoisson::addLatticeCorrection
         {
             continue;
         }
-        if (shaped != t)
-        {
-            latticeGreensFunction::shape
-            (
-                latticePosition(xTargets[t]), Rc, cellsT, wT
-            );
-            shaped = t;
-        }
         latticeGreensFunction::shape(latticePosition(xSource[j]), Rc, cellsS, wS);
         const scalar rm = std::sqrt(r2);
         const vector exact = (k*(1 - shapedCorrection(rm/R))/(r2*rm))*r;
         farField_[targets[t]] +=
             qSource[j]
-           *(exact - unit*lattice_->pairField(cellsT, wT, cellsS, wS));
+           *(exact - unit*lattice_->pairField(cellsT[t], wT[t], cellsS, wS));
     }
 }
 
