@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bemFmm.H"
+#include "simdClones.H"
 #include "mathematicalConstants.H"
 #include "error.H"
 
@@ -23,7 +24,8 @@ using Foam::vector;
 // potential x 4 pi: q/|d|. Mutual: one 1/r per pair serves both points.
 
 // Points [a0, a1) with [b0, b1), a disjoint range of the same arrays
-inline void p2pMutual
+SIMD_CLONES
+void p2pMutual
 (
     const label a0, const label a1, const label b0, const label b1,
     const scalar* __restrict__ x, const scalar* __restrict__ y,
@@ -52,7 +54,8 @@ inline void p2pMutual
 
 
 // All pairs within [a0, a1), each once
-inline void p2pSelf
+SIMD_CLONES
+void p2pSelf
 (
     const label a0, const label a1,
     const scalar* __restrict__ x, const scalar* __restrict__ y,
@@ -70,7 +73,8 @@ inline void p2pSelf
 
 // As p2pMutual / p2pSelf (b0 < 0: within [a0, a1)), skipping pairs of the
 // same group
-inline void p2pGroups
+SIMD_CLONES
+void p2pGroups
 (
     const label a0, const label a1, label b0, label b1,
     const scalar* __restrict__ x, const scalar* __restrict__ y,
@@ -107,7 +111,8 @@ inline void p2pGroups
 
 
 // Targets [a0, a1) of one tree from the sources [b0, b1) of another
-inline void p2pOneWay
+SIMD_CLONES
+void p2pOneWay
 (
     const label a0, const label a1, const label b0, const label b1,
     const scalar* __restrict__ tx, const scalar* __restrict__ ty,
@@ -350,6 +355,7 @@ struct m2lRows<P, K, 1>
 };
 
 template<int P>
+SIMD_CLONES
 void m2lMutualT
 (
     const vector& R,

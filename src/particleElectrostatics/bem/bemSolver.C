@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bemSolver.H"
+#include "simdClones.H"
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
 #include "error.H"
@@ -31,6 +32,60 @@ double now()
     timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return ts.tv_sec + 1e-9*ts.tv_nsec;
+}
+
+// Direct sums between the patches i0..i1 of one particle and j0..j1 of
+// another, both sides from one 1/r per pair (Newton's third law): eps0 E
+// x 4 pi of the patch charges q and, withPotential, eps0 psi x 4 pi of
+// the free sources w with their centre-of-charge shifts S (w S). Separate
+// coordinate arrays and branch-free inner loops, so that they vectorise
+template<bool withPotential>
+SIMD_CLONES
+void mutualDirectSums
+(
+    const Foam::label i0, const Foam::label i1,
+    const Foam::label j0, const Foam::label j1,
+    const Foam::scalar* X, const Foam::scalar* Y, const Foam::scalar* Z,
+    const Foam::scalar* q, const Foam::scalar* w,
+    const Foam::scalar* SX, const Foam::scalar* SY, const Foam::scalar* SZ,
+    Foam::scalar* EX, Foam::scalar* EY, Foam::scalar* EZ, Foam::scalar* pot
+)
+{
+    using Foam::scalar;
+    for (Foam::label i = i0; i < i1; ++i)
+    {
+        const scalar xi = X[i], yi = Y[i], zi = Z[i], qi = q[i];
+        scalar ex = 0, ey = 0, ez = 0, pt = 0;
+        #pragma omp simd reduction(+:ex, ey, ez, pt)
+        for (Foam::label j = j0; j < j1; ++j)
+        {
+            const scalar dx = xi - X[j];
+            const scalar dy = yi - Y[j];
+            const scalar dz = zi - Z[j];
+            const scalar rInv = 1/std::sqrt(dx*dx + dy*dy + dz*dz);
+            const scalar r3 = rInv*rInv*rInv;
+            const scalar qr3 = q[j]*r3, qir3 = qi*r3;
+            ex += qr3*dx;
+            ey += qr3*dy;
+            ez += qr3*dz;
+            EX[j] -= qir3*dx;
+            EY[j] -= qir3*dy;
+            EZ[j] -= qir3*dz;
+            if (withPotential)
+            {
+                pt += w[j]*rInv + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)*r3;
+                pot[j] +=
+                    w[i]*rInv - (SX[i]*dx + SY[i]*dy + SZ[i]*dz)*r3;
+            }
+        }
+        EX[i] += ex;
+        EY[i] += ey;
+        EZ[i] += ez;
+        if (withPotential)
+        {
+            pot[i] += pt;
+        }
+    }
 }
 
 } // namespace
@@ -773,6 +828,7 @@ void Foam::bemSolver::directSums
     const scalarField& sigmaFall,
     const scalarField& q,
     const scalarField& qF,
+    const bool withPotential,
     vectorField& E,
     scalarField& phi,
     vectorField& shift
@@ -781,8 +837,6 @@ void Foam::bemSolver::directSums
     const label N = x_.size();
     const label np = particles_.size();
     const scalar c4pi = 1/(4*pi);
-    // Direct sums by blocks of (target, source) particles, branch-free
-    // inner loops on separate coordinate arrays (vectorised)
     scalarField w;
     freeSources(sigmaFall, w, shift);
     scalarField X(N), Y(N), Z(N), SX(N), SY(N), SZ(N);
@@ -795,60 +849,52 @@ void Foam::bemSolver::directSums
         SY[j] = w[j]*shift[j].y();
         SZ[j] = w[j]*shift[j].z();
     }
+    scalarField EX(N, Zero), EY(N, Zero), EZ(N, Zero), pot(N, Zero);
     for (label p = 0; p < np; ++p)
     {
-        // Own patches by the point kernel: a non-uniform free charge
+        for (label s = p + 1; s < np; ++s)
+        {
+            (withPotential ? mutualDirectSums<true> : mutualDirectSums<false>)
+            (
+                offset_[p], offset_[p + 1], offset_[s], offset_[s + 1],
+                X.cdata(), Y.cdata(), Z.cdata(), q.cdata(), w.cdata(),
+                SX.cdata(), SY.cdata(), SZ.cdata(),
+                EX.data(), EY.data(), EZ.data(), pot.data()
+            );
+        }
+        if (!withPotential)
+        {
+            continue;
+        }
+
+        // Own patches by the point kernel, potential only: a non-uniform
+        // free charge
         bool ownPoint = false;
         for (label i = offset_[p]; i < offset_[p + 1]; ++i)
         {
             ownPoint = ownPoint || sigmaFall[i] != 0;
         }
         ownPoint = ownPoint && !particles_[p].uniformF;
-        for (label i = offset_[p]; i < offset_[p + 1]; ++i)
+        for (label i = offset_[p]; i < offset_[p + 1] && ownPoint; ++i)
         {
             const scalar xi = X[i], yi = Y[i], zi = Z[i];
-            scalar ex = 0, ey = 0, ez = 0, pot = 0;
-            for (label s = 0; s < np; ++s)
+            scalar pt = 0;
+            #pragma omp simd reduction(+:pt)
+            for (label j = offset_[p]; j < offset_[p + 1]; ++j)
             {
-                const label j0 = offset_[s], j1 = offset_[s + 1];
-                if (s != p)
-                {
-                    #pragma omp simd reduction(+:ex, ey, ez, pot)
-                    for (label j = j0; j < j1; ++j)
-                    {
-                        const scalar dx = xi - X[j];
-                        const scalar dy = yi - Y[j];
-                        const scalar dz = zi - Z[j];
-                        const scalar rInv =
-                            1/std::sqrt(dx*dx + dy*dy + dz*dz);
-                        // (q rInv) rInv rInv: the forces' arithmetic
-                        // of the potential-free sum
-                        const scalar qr3 = q[j]*rInv*rInv*rInv;
-                        pot += w[j]*rInv
-                          + (SX[j]*dx + SY[j]*dy + SZ[j]*dz)
-                           *rInv*rInv*rInv;
-                        ex += qr3*dx;
-                        ey += qr3*dy;
-                        ez += qr3*dz;
-                    }
-                }
-                else if (ownPoint)
-                {
-                    // Own patches: potential only, without i itself
-                    #pragma omp simd reduction(+:pot)
-                    for (label j = j0; j < j1; ++j)
-                    {
-                        const scalar dx = xi - X[j];
-                        const scalar dy = yi - Y[j];
-                        const scalar dz = zi - Z[j];
-                        const scalar r2 = dx*dx + dy*dy + dz*dz;
-                        pot += (j == i ? 0 : qF[j]/std::sqrt(r2 + (j == i)));
-                    }
-                }
+                const scalar dx = xi - X[j];
+                const scalar dy = yi - Y[j];
+                const scalar dz = zi - Z[j];
+                const scalar r2 = dx*dx + dy*dy + dz*dz;
+                pt += (j == i ? 0 : qF[j]/std::sqrt(r2 + (j == i)));
             }
-            E[i] = c4pi*vector(ex, ey, ez);
-            phi[i] = c4pi*pot;
+            pot[i] += pt;
         }
+    }
+    for (label i = 0; i < N; ++i)
+    {
+        E[i] = c4pi*vector(EX[i], EY[i], EZ[i]);
+        phi[i] = c4pi*pot[i];
     }
 }
 
@@ -960,7 +1006,7 @@ void Foam::bemSolver::computeOutputs()
     // centres of charge (to first order in their shift from the patch
     // centres) for uniformly charged ellipsoids; spheres' exact monopoles,
     // own uniform densities, quadrature near the target and the point
-    // charges are added by addFreePotential
+    // charges are added by addFreePotential. Without the energy: E only
     vectorField E(N, Zero);
     scalarField phi(N, Zero);
     vectorField shift;
@@ -968,13 +1014,16 @@ void Foam::bemSolver::computeOutputs()
     if (!direct)
     {
         // Field of the other particles (exact exclusion), potential of all
-        vectorField Eall;
-        fastSum_->evaluate(qF, x_, true, Eall, &phi);
+        if (withEnergy_)
+        {
+            vectorField Eall;
+            fastSum_->evaluate(qF, x_, true, Eall, &phi);
+        }
         fastSum_->evaluateOthers(q, E, nullptr);
     }
     else
     {
-        directSums(sigmaFall, q, qF, E, phi, shift);
+        directSums(sigmaFall, q, qF, withEnergy_, E, phi, shift);
     }
     for (label i = 0; i < N; ++i)
     {
@@ -992,7 +1041,7 @@ void Foam::bemSolver::computeOutputs()
             E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
         }
     }
-    if (direct)
+    if (withEnergy_ && direct)
     {
         for (const particle& pt : particles_)
         {
@@ -1003,12 +1052,19 @@ void Foam::bemSolver::computeOutputs()
             }
         }
     }
-    addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
+    if (withEnergy_)
+    {
+        addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
+    }
 
     forcesAndEnergy(q, E, phi);
 
     // Free point charges: 1/2 q psi_f(x_k), near patches by quadrature
-    addPointChargeEnergy(sigmaFall, qF, energy_);
+    if (withEnergy_)
+    {
+        addPointChargeEnergy(sigmaFall, qF, energy_);
+    }
+    energyValid_ = withEnergy_;
 }
 
 
@@ -1019,7 +1075,9 @@ Foam::bemSolver::bemSolver(const scalar kappa0, const controls& c)
     ctrl_(c),
     kappa0_(kappa0),
     assembled_(false),
-    energy_(0)
+    withEnergy_(true),
+    energy_(0),
+    energyValid_(false)
 {
     if (!(kappa0 >= 1) || !std::isfinite(kappa0))
     {
@@ -1497,6 +1555,18 @@ const Foam::bemSolver::solveInfo& Foam::bemSolver::evaluate()
     info_.converged = true;
     computeOutputs();
     return info_;
+}
+
+
+Foam::scalar Foam::bemSolver::energy() const
+{
+    if (!energyValid_)
+    {
+        FatalErrorInFunction
+            << "no energy: the last solve() or evaluate() ran without it"
+            << " (setWithEnergy(true) before it)" << exit(FatalError);
+    }
+    return energy_;
 }
 
 

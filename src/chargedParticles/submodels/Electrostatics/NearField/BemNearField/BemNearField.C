@@ -387,6 +387,7 @@ Foam::scalar Foam::BemNearField<CloudType>::selfEnergy
         bem_->clearParticles();
         bem_->setExternalField(bemSolver::fieldFunction());
         bem_->addParticle(shapeI, Zero, tensor::I, kappa, 1.0);
+        bem_->setWithEnergy(true);
         bem_->solve();
         iter = selfEnergy_.emplace(key, bem_->energy()).first;
     }
@@ -1703,19 +1704,28 @@ void Foam::BemNearField<CloudType>::solveCluster
     if (remeshed)
     {
         setUpCluster(gp, mem, oldShapes, poses, Eext, known, Enear);
+        bem_->setWithEnergy(true);
         runCluster(mem.size(), true);
         res.remeshDelta += clusterEnergy(gp, cs, clusterI, oldShapes, Eext, Uout);
     }
 
     // Between solves (solveInterval) the bound charge is carried in the
-    // members' body frames, when every member has one on its mesh
+    // members' body frames, when every member has one on its mesh. The
+    // energy (its potential sums: a third of the cost of a step between
+    // solves) only for the log and across a mesh change
     const label carried =
         setUpCluster(gp, mem, shapes, poses, Eext, known, Enear);
+    const bool withEnergy = remeshed || this->owner().logThisStep();
+    bem_->setWithEnergy(withEnergy);
     runCluster(mem.size(), solveNow || carried < mem.size());
-    const scalar U = clusterEnergy(gp, cs, clusterI, shapes, Eext, Uout);
-    if (remeshed)
+    if (withEnergy)
     {
-        res.remeshDelta -= U;
+        const scalar U = clusterEnergy(gp, cs, clusterI, shapes, Eext, Uout);
+        if (remeshed)
+        {
+            res.remeshDelta -= U;
+        }
+        stats_.energy += U;
     }
     forAll(mem, m)
     {
@@ -1736,7 +1746,6 @@ void Foam::BemNearField<CloudType>::solveCluster
             std::make_pair(shapeKeys_[shapes[m]], scalarField(bem_->sigmaB(m)))
         );
     }
-    stats_.energy += U;
     addReactions(gp, cs, clusterI, rDipole2, farField, res);
 }
 
