@@ -715,28 +715,19 @@ scalar polyValue(const poly& p, const scalar t)
 }
 
 
-// Point of surface a on the innermost level surface of b: the minimum of
-// P_b subject to P_a = 0, Ruan Eqs. (29)-(31). Returns false if no valid
-// real root was found.
-bool levelSurfacePoint
+// Ruan Eqs. (30)-(31) in a's scaled body frame (P_a = xi^T Da xi - 1,
+// P_b = (xi - e)^T Sb (xi - e) - 1, w = Sb e): Phi(tau) = det(Sb + tau Da),
+// y(tau) = adj(Sb + tau Da) w (so xi = y/Phi), and the sextic in tau whose
+// roots put xi on surface a
+poly levelSurfacePolynomial
 (
-    const ellipsoid& ea,
-    const ellipsoid& eb,
-    const scalar L,
-    point& x,
-    label& iterations
+    const vector& Da,
+    const tensor& SbT,
+    const vector& w,
+    poly& Phi,
+    poly y[3]
 )
 {
-    // Body frame of a, centred on c_a, lengths scaled by L:
-    //   P_a(xi) = xi^T Da xi - 1        (S_a = Da, b_a = 0, c_a = -1)
-    //   P_b(xi) = (xi - e)^T Sb (xi - e) - 1
-    const tensor& Ra = ea.R();
-    const vector& ax = ea.semiAxes();
-    const vector Da(sqr(L/ax.x()), sqr(L/ax.y()), sqr(L/ax.z()));
-    const vector e = (Ra.T() & (eb.centre() - ea.centre()))/L;
-    const tensor SbT = (Ra.T() & tensor(eb.S()) & Ra)*sqr(L);
-    const vector w = SbT & e;
-
     // Eq. (30): (Sb + tau Da) xi = Sb e, i.e. xi = adj(A) w/det(A) with
     // A(tau) = Sb + tau Da, y(tau) = adj(A(tau)) w, Phi(tau) = det A(tau)
     poly A[3][3];
@@ -759,18 +750,44 @@ bool levelSurfacePoint
         }
     }
 
-    const poly Phi = A[0][0]*adj[0][0] + A[0][1]*adj[1][0] + A[0][2]*adj[2][0];
+    Phi = A[0][0]*adj[0][0] + A[0][1]*adj[1][0] + A[0][2]*adj[2][0];
 
-    poly y[3];
     for (label i = 0; i < 3; ++i)
     {
         y[i] = w[0]*adj[i][0] + w[1]*adj[i][1] + w[2]*adj[i][2];
     }
 
     // Eq. (31) with S1 = Da, b1 = 0, c1 = -1: y^T Da y - Phi^2 = 0
-    const poly p =
+    return
         Da[0]*(y[0]*y[0]) + Da[1]*(y[1]*y[1]) + Da[2]*(y[2]*y[2])
       - Phi*Phi;
+}
+
+
+// Point of surface a on the innermost level surface of b: the minimum of
+// P_b subject to P_a = 0, Ruan Eqs. (29)-(31). Returns false if no valid
+// real root was found.
+bool levelSurfacePoint
+(
+    const ellipsoid& ea,
+    const ellipsoid& eb,
+    const scalar L,
+    point& x,
+    label& iterations
+)
+{
+    // Body frame of a, centred on c_a, lengths scaled by L:
+    //   P_a(xi) = xi^T Da xi - 1        (S_a = Da, b_a = 0, c_a = -1)
+    //   P_b(xi) = (xi - e)^T Sb (xi - e) - 1
+    const tensor& Ra = ea.R();
+    const vector& ax = ea.semiAxes();
+    const vector Da(sqr(L/ax.x()), sqr(L/ax.y()), sqr(L/ax.z()));
+    const vector e = (Ra.T() & (eb.centre() - ea.centre()))/L;
+    const tensor SbT = (Ra.T() & tensor(eb.S()) & Ra)*sqr(L);
+    const vector w = SbT & e;
+
+    poly Phi, y[3];
+    const poly p = levelSurfacePolynomial(Da, SbT, w, Phi, y);
 
     Eigen::Matrix<scalar, 7, 1> coeffs;
     for (label i = 0; i < 7; ++i)

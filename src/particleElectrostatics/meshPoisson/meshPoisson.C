@@ -456,6 +456,32 @@ void Foam::meshPoisson::shapeAt
 }
 
 
+void Foam::meshPoisson::setWallCoeffScales(const labelUList& fixedWallStart)
+{
+    // Fixed potentials on the wall's surface: the scale of each face's
+    // coefficients from its surface height
+    wallCoeffScale_.setSize(mesh_.boundaryMesh().size());
+    forAll(fixedWallStart, patchi)
+    {
+        if (fixedWallStart[patchi] < 0)
+        {
+            continue;
+        }
+        const scalarField& deltaCoeffs = mesh_.boundary()[patchi].deltaCoeffs();
+        scalarField& scale = wallCoeffScale_[patchi];
+        scale.setSize(deltaCoeffs.size());
+        forAll(scale, i)
+        {
+            // Planar walls (a fit's round-off) keep their coefficients; a
+            // convex wall's surface lies inside the faces (s < 0)
+            const scalar d = 1/deltaCoeffs[i];
+            const scalar s = wallSurface_[fixedWallStart[patchi] + i][0];
+            scale[i] = mag(s) < 1e-8*d ? 1 : d/(d + max(s, -0.5*d));
+        }
+    }
+}
+
+
 void Foam::meshPoisson::collectWallFaces()
 {
     // This processor's wall faces (centre, outward unit normal,
@@ -528,27 +554,7 @@ void Foam::meshPoisson::collectWallFaces()
         fitWallSurfaces(pointHalo.points(), normals, points);
     }
 
-    // Fixed potentials on the wall's surface: the scale of each face's
-    // coefficients from its surface height
-    wallCoeffScale_.setSize(pbm.size());
-    forAll(fixedWallStart, patchi)
-    {
-        if (fixedWallStart[patchi] < 0)
-        {
-            continue;
-        }
-        const scalarField& deltaCoeffs = mesh_.boundary()[patchi].deltaCoeffs();
-        scalarField& scale = wallCoeffScale_[patchi];
-        scale.setSize(deltaCoeffs.size());
-        forAll(scale, i)
-        {
-            // Planar walls (a fit's round-off) keep their coefficients; a
-            // convex wall's surface lies inside the faces (s < 0)
-            const scalar d = 1/deltaCoeffs[i];
-            const scalar s = wallSurface_[fixedWallStart[patchi] + i][0];
-            scale[i] = mag(s) < 1e-8*d ? 1 : d/(d + max(s, -0.5*d));
-        }
-    }
+    setWallCoeffScales(fixedWallStart);
 
     // The faces the images and the self fields' wall planes look up: those
     // within reach of this processor's box (a halo, with their fits): the

@@ -639,6 +639,61 @@ void returnFromSlabs
 }
 
 
+// Per axis of P3M's mesh (length L, n points, nk wave numbers, order P,
+// aliases |b| <= nb): the wave numbers k1, their ik-differentiation
+// values kd (zero at the Nyquist plane: a real field), the alias sum of
+// U^2 den (closed form, Poisson summation: sum_m U^2(k + 2pi m/h) =
+// sum_j M_2P(P + j) cos(k h j)), and each alias's U^2 and wave number
+struct axisTables
+{
+    std::vector<scalar> k1, kd, den;
+    std::vector<std::vector<scalar>> U2a, ka;
+};
+
+axisTables axisTablesFor
+(
+    const scalar L,
+    const label n,
+    const label nk,
+    const label P,
+    const label nb
+)
+{
+    using Foam::constant::mathematical::twoPi;
+    std::vector<scalar> M2P(2*P);
+    bspline(2*P, 0, M2P.data());
+    const scalar h = L/n;
+    axisTables t;
+    t.k1.resize(nk);
+    t.kd.resize(nk);
+    t.den.resize(nk);
+    t.U2a.assign(nk, std::vector<scalar>(2*nb + 1));
+    t.ka.assign(nk, std::vector<scalar>(2*nb + 1));
+    for (label i = 0; i < nk; ++i)
+    {
+        const label m = (i <= n/2) ? i : i - n;
+        const scalar k = twoPi*m/L;
+        t.k1[i] = k;
+        t.kd[i] = (2*i == n) ? 0 : k;
+        scalar s = M2P[P];
+        for (label j = 1; j < P; ++j)
+        {
+            s += 2*M2P[P + j]*Foam::cos(k*h*j);
+        }
+        t.den[i] = s;
+        for (label b = -nb; b <= nb; ++b)
+        {
+            const scalar kb = k + twoPi*b/h;
+            const scalar x = 0.5*kb*h;
+            const scalar sinc = (x == 0) ? 1 : Foam::sin(x)/x;
+            t.U2a[i][b + nb] = Foam::pow(sinc, 2*P);
+            t.ka[i][b + nb] = kb;
+        }
+    }
+    return t;
+}
+
+
 } // End anonymous namespace
 
 
@@ -1089,44 +1144,13 @@ void Foam::p3m::influenceFunction(const bool withPotential) const
         );
     }
 
-    // Closed-form alias sum of U^2 (Poisson summation): sum_m U^2(k + 2pi
-    // m/h) = sum_j M_2P(P + j) cos(k h j)
-    std::vector<scalar> M2P(2*P);
-    bspline(2*P, 0, M2P.data());
-
-    std::vector<scalar> k1[3], kd[3], den[3];
-    std::vector<std::vector<scalar>> U2a[3], ka[3];
+    axisTables t[3];
     for (direction d = 0; d < 3; ++d)
     {
-        const label nk = (d == 2) ? n[d]/2 + 1 : n[d];
-        const scalar h = L_[d]/n[d];
-        k1[d].resize(nk);
-        kd[d].resize(nk);
-        den[d].resize(nk);
-        U2a[d].assign(nk, std::vector<scalar>(2*nb[d] + 1));
-        ka[d].assign(nk, std::vector<scalar>(2*nb[d] + 1));
-        for (label i = 0; i < nk; ++i)
-        {
-            const label m = (i <= n[d]/2) ? i : i - n[d];
-            const scalar k = twoPi*m/L_[d];
-            k1[d][i] = k;
-            // ik differentiation: zero at the Nyquist plane (real field)
-            kd[d][i] = (2*i == n[d]) ? 0 : k;
-            scalar s = M2P[P];
-            for (label j = 1; j < P; ++j)
-            {
-                s += 2*M2P[P + j]*Foam::cos(k*h*j);
-            }
-            den[d][i] = s;
-            for (label b = -nb[d]; b <= nb[d]; ++b)
-            {
-                const scalar kb = k + twoPi*b/h;
-                const scalar x = 0.5*kb*h;
-                const scalar sinc = (x == 0) ? 1 : Foam::sin(x)/x;
-                U2a[d][i][b + nb[d]] = Foam::pow(sinc, 2*P);
-                ka[d][i][b + nb[d]] = kb;
-            }
-        }
+        t[d] = axisTablesFor
+        (
+            L_[d], n[d], (d == 2) ? n[d]/2 + 1 : n[d], P, nb[d]
+        );
     }
 
     // Serial: all of it, (i0, i1, i2) order; distributed: this
@@ -1142,9 +1166,9 @@ void Foam::p3m::influenceFunction(const bool withPotential) const
     {
         Gphi_.clear();
     }
-    kx_ = kd[0];
-    ky_ = kd[1];
-    kz_ = kd[2];
+    kx_ = t[0].kd;
+    ky_ = t[1].kd;
+    kz_ = t[2].kd;
     const scalar c4a2 = 1.0/(4*a*a);
 
     for (label i0 = 0; i0 < n[0]; ++i0)
@@ -1153,37 +1177,37 @@ void Foam::p3m::influenceFunction(const bool withPotential) const
         {
             for (label i2 = 0; i2 < n2c; ++i2)
             {
-                const vector k(k1[0][i0], k1[1][i1], k1[2][i2]);
+                const vector k(t[0].k1[i0], t[1].k1[i1], t[2].k1[i2]);
                 const scalar k2 = magSqr(k);
                 if (k2 == 0) continue;
                 scalar num = 0, numPhi = 0;
                 for (label b0 = 0; b0 <= 2*nb[0]; ++b0)
                 {
-                    const scalar u0 = U2a[0][i0][b0];
-                    const scalar q0 = ka[0][i0][b0];
+                    const scalar u0 = t[0].U2a[i0][b0];
+                    const scalar q0 = t[0].ka[i0][b0];
                     for (label b1 = 0; b1 <= 2*nb[1]; ++b1)
                     {
-                        const scalar u01 = u0*U2a[1][i1][b1];
-                        const scalar q1 = ka[1][i1][b1];
+                        const scalar u01 = u0*t[1].U2a[i1][b1];
+                        const scalar q1 = t[1].ka[i1][b1];
                         for (label b2 = 0; b2 <= 2*nb[2]; ++b2)
                         {
-                            const scalar q2 = ka[2][i2][b2];
+                            const scalar q2 = t[2].ka[i2][b2];
                             const scalar kb2 = q0*q0 + q1*q1 + q2*q2;
                             const scalar dot =
                                 k.x()*q0 + k.y()*q1 + k.z()*q2;
                             num +=
-                                u01*U2a[2][i2][b2]*dot/kb2
+                                u01*t[2].U2a[i2][b2]*dot/kb2
                                *Foam::exp(-kb2*c4a2);
                             if (withPotential)
                             {
                                 numPhi +=
-                                    u01*U2a[2][i2][b2]/kb2
+                                    u01*t[2].U2a[i2][b2]/kb2
                                    *Foam::exp(-kb2*c4a2);
                             }
                         }
                     }
                 }
-                const scalar D = den[0][i0]*den[1][i1]*den[2][i2];
+                const scalar D = t[0].den[i0]*t[1].den[i1]*t[2].den[i2];
                 const label c =
                     distributed_
                   ? ((i1 - i1Begin)*n[0] + i0)*n2c + i2

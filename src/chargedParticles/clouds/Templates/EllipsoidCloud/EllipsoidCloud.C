@@ -81,6 +81,38 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
 
 template<class CloudType>
+Foam::scalar Foam::EllipsoidCloud<CloudType>::bodyOverlap
+(
+    const parcelType& pA,
+    const point& xA,
+    const parcelType& pB,
+    const point& xB,
+    const scalar r2,
+    const scalar b
+)
+{
+    // Coincident centres (r2 = 0) have no contact normal: the deepest
+    // overlap
+    if (!(r2 > 0))
+    {
+        return 2*b;
+    }
+    const ellipsoidContact::result c =
+        pA.isSphere() && pB.isSphere()
+      ? ellipsoidContact::sphereSphere
+        (
+            xA, pA.semiAxes().x(), xB, pB.semiAxes().x()
+        )
+      : ellipsoidContact::contact
+        (
+            ellipsoid(pA.semiAxes(), xA, pA.orientation()),
+            ellipsoid(pB.semiAxes(), xB, pB.orientation())
+        );
+    return c.contact ? c.overlap : 0;
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
 {
     // The parcels injected this step have not moved yet (age 0); most
@@ -153,24 +185,7 @@ void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
             }
             const scalar b =
                 min(cmptMin(pA.semiAxes()), cmptMin(pB.semiAxes()));
-
-            // Coincident centres have no contact normal: the deepest overlap
-            scalar overlap = 2*b;
-            if (r2 > 0)
-            {
-                const ellipsoidContact::result c =
-                    pA.isSphere() && pB.isSphere()
-                  ? ellipsoidContact::sphereSphere
-                    (
-                        xNew[t], pA.semiAxes().x(), xAll[s], pB.semiAxes().x()
-                    )
-                  : ellipsoidContact::contact
-                    (
-                        ellipsoid(pA.semiAxes(), xNew[t], pA.orientation()),
-                        ellipsoid(pB.semiAxes(), xAll[s], pB.orientation())
-                    );
-                overlap = c.contact ? c.overlap : 0;
-            }
+            const scalar overlap = bodyOverlap(pA, xNew[t], pB, xAll[s], r2, b);
 
             // Touching to round-off (1e-6 b) is not an overlap
             if (overlap > max(maxInjectionOverlap_, 1e-6)*b)

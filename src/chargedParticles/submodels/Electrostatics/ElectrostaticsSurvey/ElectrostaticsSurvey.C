@@ -264,6 +264,49 @@ Foam::dictionary Foam::ElectrostaticsSurvey<CloudType>::rungDict
 
 
 template<class CloudType>
+bool Foam::ElectrostaticsSurvey<CloudType>::listedRung
+(
+    const UList<Tuple2<word, dictionary>>& c,
+    const word& caseType,
+    const dictionary& coeffs
+)
+{
+    // The same rung: each of the case's entries the same there
+    bool listed = false;
+    for (const auto& cand : c)
+    {
+        const dictionary& cc =
+            cand.second().subOrEmptyDict(caseType + "Coeffs");
+        if
+        (
+            cand.second().get<word>("electrostaticsModel") != caseType
+        )
+        {
+            continue;
+        }
+        bool same = true;
+        for (const entry& e : coeffs)
+        {
+            const entry* ce = cc.findEntry(e.keyword(), keyType::LITERAL);
+            OStringStream a, b;
+            if (ce)
+            {
+                a << e;
+                b << *ce;
+            }
+            if (!ce || a.str() != b.str())
+            {
+                same = false;
+                break;
+            }
+        }
+        listed = listed || same;
+    }
+    return listed;
+}
+
+
+template<class CloudType>
 Foam::List<Foam::Tuple2<Foam::word, Foam::dictionary>>
 Foam::ElectrostaticsSurvey<CloudType>::candidates
 (
@@ -363,38 +406,8 @@ Foam::ElectrostaticsSurvey<CloudType>::candidates
         dictionary coeffs(caseModels.subOrEmptyDict(caseType + "Coeffs"));
         coeffs.remove("nearField");
 
-        // Not again if a candidate is the same rung (each of the case's
-        // entries the same there)
-        bool listed = false;
-        for (const auto& cand : c)
-        {
-            const dictionary& cc =
-                cand.second().subOrEmptyDict(caseType + "Coeffs");
-            if
-            (
-                cand.second().get<word>("electrostaticsModel") != caseType
-            )
-            {
-                continue;
-            }
-            bool same = true;
-            for (const entry& e : coeffs)
-            {
-                const entry* ce = cc.findEntry(e.keyword(), keyType::LITERAL);
-                OStringStream a, b;
-                if (ce)
-                {
-                    a << e;
-                    b << *ce;
-                }
-                if (!ce || a.str() != b.str())
-                {
-                    same = false;
-                    break;
-                }
-            }
-            listed = listed || same;
-        }
+        // Not again if a candidate is the same rung
+        const bool listed = listedRung(c, caseType, coeffs);
         if (!listed)
         {
             c.append({word("case:" + caseType), rungDict(caseType, coeffs)});

@@ -578,60 +578,13 @@ void Foam::RaseraTriboCharging<CloudType>::findTransfers
 
 
 template<class CloudType>
-void Foam::RaseraTriboCharging<CloudType>::transfer
+void Foam::RaseraTriboCharging<CloudType>::applyPartnerShares
 (
-    const UList<ParcelContact<parcelType>>& contacts,
+    List<DynamicList<labelPair>>& sentIds,
+    List<DynamicList<scalar>>& sentDq,
     const labelUList& neighbours
 )
 {
-    // All transfers from the charges before this collide, then applied.
-    // A pair across processors is seen on both: only the side of the
-    // lower (origProc, origId) transfers, and sends the partner's share to
-    // the processor that referred the partner (a copy across a cyclic on
-    // this processor: to itself), so the processors balance to the last
-    // bit (the two sides' contact geometries differ at round-off). Both
-    // sides still update their area records
-    dq_.setSize(contacts.size());
-    List<DynamicList<labelPair>> sentIds(Pstream::nProcs());
-    List<DynamicList<scalar>> sentDq(Pstream::nProcs());
-    findTransfers(contacts, sentIds, sentDq);
-
-    forAll(contacts, k)
-    {
-        const ParcelContact<parcelType>& c = contacts[k];
-        if (dq_[k] == 0)
-        {
-            continue;
-        }
-        c.pA->q() += dq_[k];
-        const bool books = nMaterials_ > 1;
-        if (c.pB)
-        {
-            ++nPairCharging_;
-            if (books)
-            {
-                fromParticlesLocal_[c.pA->material()] += dq_[k];
-            }
-            if (!c.referred)
-            {
-                c.pB->q() -= dq_[k];
-                if (books)
-                {
-                    fromParticlesLocal_[c.pB->material()] -= dq_[k];
-                }
-            }
-        }
-        else
-        {
-            ++nWallCharging_;
-            wallChargeLocal_[c.patchi] -= dq_[k];
-            if (books)
-            {
-                fromWallsLocal_[c.pA->material()] += dq_[k];
-            }
-        }
-    }
-
     // The partners' shares, exchanged with the neighbours only (those
     // that refer parcels here and receive this processor's; counts and
     // data between them, no all-to-all)
@@ -687,6 +640,65 @@ void Foam::RaseraTriboCharging<CloudType>::transfer
             }
         }
     }
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::transfer
+(
+    const UList<ParcelContact<parcelType>>& contacts,
+    const labelUList& neighbours
+)
+{
+    // All transfers from the charges before this collide, then applied.
+    // A pair across processors is seen on both: only the side of the
+    // lower (origProc, origId) transfers, and sends the partner's share to
+    // the processor that referred the partner (a copy across a cyclic on
+    // this processor: to itself), so the processors balance to the last
+    // bit (the two sides' contact geometries differ at round-off). Both
+    // sides still update their area records
+    dq_.setSize(contacts.size());
+    List<DynamicList<labelPair>> sentIds(Pstream::nProcs());
+    List<DynamicList<scalar>> sentDq(Pstream::nProcs());
+    findTransfers(contacts, sentIds, sentDq);
+
+    forAll(contacts, k)
+    {
+        const ParcelContact<parcelType>& c = contacts[k];
+        if (dq_[k] == 0)
+        {
+            continue;
+        }
+        c.pA->q() += dq_[k];
+        const bool books = nMaterials_ > 1;
+        if (c.pB)
+        {
+            ++nPairCharging_;
+            if (books)
+            {
+                fromParticlesLocal_[c.pA->material()] += dq_[k];
+            }
+            if (!c.referred)
+            {
+                c.pB->q() -= dq_[k];
+                if (books)
+                {
+                    fromParticlesLocal_[c.pB->material()] -= dq_[k];
+                }
+            }
+        }
+        else
+        {
+            ++nWallCharging_;
+            wallChargeLocal_[c.patchi] -= dq_[k];
+            if (books)
+            {
+                fromWallsLocal_[c.pA->material()] += dq_[k];
+            }
+        }
+    }
+
+    applyPartnerShares(sentIds, sentDq, neighbours);
 
     // A transfer that charges a parcel beyond the largest mean surface
     // field (inputLimits.H) comes from a charging efficiency no material
@@ -756,6 +768,52 @@ Foam::scalarField Foam::RaseraTriboCharging<CloudType>::wallCharge() const
     Pstream::listCombineGather(q, plusEqOp<scalar>());
     Pstream::listCombineScatter(q);
     return wallCharge0_ + q;
+}
+
+
+template<class CloudType>
+void Foam::RaseraTriboCharging<CloudType>::openBalanceFile()
+{
+    // Per-material columns with several materials
+    const label nMaterialColumns = nMaterials_ > 1 ? nMaterials_ : 0;
+    const Time& time = this->owner().mesh().time();
+    const polyBoundaryMesh& patches = this->owner().mesh().boundaryMesh();
+    const fileName dir =
+        time.globalPath()/functionObject::outputPrefix/"lagrangian"
+       /this->owner().name()/"triboCharging"
+       /time.timeName(time.startTime().value());
+    mkDir(dir);
+    filePtr_.reset(new OFstream(dir/"chargeBalance.dat"));
+    OFstream& os = filePtr_();
+    os.precision(17);
+    os  << "# Contact charging of cloud " << this->owner().name()
+        << " [C]: charge received by each wall patch since the start;"
+        << " balance = parcels + walls + outflow (charge carried out by"
+        << " escaping parcels)" << nl << "# time parcels";
+    forAll(patches, patchi)
+    {
+        if (walls_.set(nMaterials_*patchi))
+        {
+            os  << ' ' << patches[patchi].name();
+        }
+    }
+    os  << " balance nPairContactsCharging nWallContactsCharging outflow"
+        << " nPairImpacts nWallImpacts pairImpactArea wallImpactArea";
+    const particleMaterials& materials =
+        this->owner().constProps().materials();
+    for (label m = 0; m < nMaterialColumns; ++m)
+    {
+        os  << " parcels:" << materials.name(m);
+    }
+    for (label m = 0; m < nMaterialColumns; ++m)
+    {
+        os  << " fromWalls:" << materials.name(m);
+    }
+    for (label m = 0; m < nMaterialColumns; ++m)
+    {
+        os  << " fromParticles:" << materials.name(m);
+    }
+    os  << nl;
 }
 
 
@@ -830,42 +888,7 @@ void Foam::RaseraTriboCharging<CloudType>::writeBalance()
 
     if (!filePtr_.valid())
     {
-        const fileName dir =
-            time.globalPath()/functionObject::outputPrefix/"lagrangian"
-           /this->owner().name()/"triboCharging"
-           /time.timeName(time.startTime().value());
-        mkDir(dir);
-        filePtr_.reset(new OFstream(dir/"chargeBalance.dat"));
-        OFstream& os = filePtr_();
-        os.precision(17);
-        os  << "# Contact charging of cloud " << this->owner().name()
-            << " [C]: charge received by each wall patch since the start;"
-            << " balance = parcels + walls + outflow (charge carried out by"
-            << " escaping parcels)" << nl << "# time parcels";
-        forAll(patches, patchi)
-        {
-            if (walls_.set(nMaterials_*patchi))
-            {
-                os  << ' ' << patches[patchi].name();
-            }
-        }
-        os  << " balance nPairContactsCharging nWallContactsCharging outflow"
-            << " nPairImpacts nWallImpacts pairImpactArea wallImpactArea";
-        const particleMaterials& materials =
-            this->owner().constProps().materials();
-        forAll(qMaterials, m)
-        {
-            os  << " parcels:" << materials.name(m);
-        }
-        forAll(qMaterials, m)
-        {
-            os  << " fromWalls:" << materials.name(m);
-        }
-        forAll(qMaterials, m)
-        {
-            os  << " fromParticles:" << materials.name(m);
-        }
-        os  << nl;
+        openBalanceFile();
     }
 
     OFstream& os = filePtr_();

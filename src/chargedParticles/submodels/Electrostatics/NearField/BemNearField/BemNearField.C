@@ -111,6 +111,108 @@ inline label root(labelList& parent, label i)
     return i;
 }
 
+//- The components of the links among the halo's points (its n own
+//  points first): each linked point's key the smallest keyh of its
+//  component (unlinked: -1), owner the processor and xMin the position
+//  (in: the points) of that smallest one, propagated through the halo
+//  until no processor changes (a cluster crossing k processor boundaries
+//  takes about k + 1 rounds). Collective
+inline void labelComponents
+(
+    const processorHalo& halo,
+    const UList<labelPair>& links,
+    const scalarField& keyh,
+    const label n,
+    scalarField& key,
+    labelList& owner,
+    pointField& xMin
+)
+{
+    const label nh = keyh.size();
+    for (const labelPair& l : links)
+    {
+        for (const label e : {l.first(), l.second()})
+        {
+            key[e] = keyh[e];
+        }
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        owner[i] = key[i] >= 0 ? Pstream::myProcNo() : -1;
+    }
+    halo.updateHalo(owner);
+    while (true)
+    {
+        labelList parent(identity(nh));
+        for (const labelPair& l : links)
+        {
+            const label ra = root(parent, l.first());
+            const label rb = root(parent, l.second());
+            parent[max(ra, rb)] = min(ra, rb);
+        }
+        // The smallest key of each component (at its root)
+        labelList best(identity(nh));
+        for (label e = 0; e < nh; ++e)
+        {
+            if (key[e] >= 0)
+            {
+                const label r = root(parent, e);
+                if (key[e] < key[best[r]])
+                {
+                    best[r] = e;
+                }
+            }
+        }
+        bool changed = false;
+        for (label i = 0; i < n; ++i)
+        {
+            const label b = best[root(parent, i)];
+            if (key[i] >= 0 && key[b] < key[i])
+            {
+                key[i] = key[b];
+                owner[i] = owner[b];
+                xMin[i] = xMin[b];
+                changed = true;
+            }
+        }
+        if (!returnReduce(changed, orOp<bool>()))
+        {
+            break;
+        }
+        halo.updateHalo(key);
+        halo.updateHalo(owner);
+        halo.updateHaloPoints(xMin);
+    }
+}
+
+//- The other processors whose boxes come within range of this one's,
+//  directly or through the cyclic translations
+inline labelList nearProcessors
+(
+    const List<boundBox>& boxes,
+    const scalar range,
+    const UList<vector>& translations
+)
+{
+    DynamicList<label> near;
+    forAll(boxes, proci)
+    {
+        if
+        (
+            processorHalo::reaches
+            (
+                boxes, Pstream::myProcNo(), proci, range, translations
+            )
+        )
+        {
+            near.append(proci);
+        }
+    }
+    labelList result;
+    result.transfer(near);
+    return result;
+}
+
 //- Every processor's entries of a map by parcel id on the master, or on
 //  every processor (toAll); holder: the processor each came from (an
 //  entry's id is held by one processor). Collective
@@ -663,6 +765,51 @@ Foam::BemNearField<CloudType>::BemNearField
 // * * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
 template<class CloudType>
+Foam::DynamicList<Foam::labelPair>
+Foam::BemNearField<CloudType>::clusterLinks
+(
+    const pointField& xh,
+    const tensorField& Rh,
+    const vectorField& Sh,
+    const scalarField& Kh,
+    const scalarField& keyh,
+    const scalar rCut,
+    const scalar kappa0
+) const
+{
+    // A link across processors is seen by both (each end lies in the
+    // other's halo); the gap is computed with the pair in id order, so
+    // that both decide alike to the last bit
+    DynamicList<labelPair> links;
+    if (rCut > 0)
+    {
+        forPairsWithinCutoff
+        (
+            xh, xh, rCut, 0,
+            [&](const label a, const label b, const vector&, const scalar r2)
+            {
+                if (a >= b || (Kh[a] == kappa0 && Kh[b] == kappa0))
+                {
+                    return;
+                }
+                const label i = keyh[a] < keyh[b] ? a : b;
+                const label j = i == a ? b : a;
+                const scalar g = bemNearFieldDetail::centreLineGap
+                (
+                    Sh[i], Rh[i], Sh[j], Rh[j], xh[i] - xh[j], r2
+                );
+                if (g < clusterGap_*min(cmptMin(Sh[a]), cmptMin(Sh[b])))
+                {
+                    links.append(labelPair(a, b));
+                }
+            }
+        );
+    }
+    return links;
+}
+
+
+template<class CloudType>
 Foam::boolList Foam::BemNearField<CloudType>::nearClusters
 (
     const pointField& x,
@@ -719,97 +866,17 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
     halo.gather(Kh);
     halo.gather(keyh);
 
-    // Members: a close partner (the test of formClusters); the links seen
-    // here (a link across processors is seen by both: each end lies in
-    // the other's halo; the gap is computed with the pair in id order, so
-    // that both decide alike to the last bit)
-    DynamicList<labelPair> links;
-    if (rCut > 0)
-    {
-        forPairsWithinCutoff
-        (
-            xh, xh, rCut, 0,
-            [&](const label a, const label b, const vector&, const scalar r2)
-            {
-                if (a >= b || (Kh[a] == kappa0 && Kh[b] == kappa0))
-                {
-                    return;
-                }
-                const label i = keyh[a] < keyh[b] ? a : b;
-                const label j = i == a ? b : a;
-                const scalar g = centreLineGap
-                (
-                    Sh[i], Rh[i], Sh[j], Rh[j], xh[i] - xh[j], r2
-                );
-                if (g < clusterGap_*min(cmptMin(Sh[a]), cmptMin(Sh[b])))
-                {
-                    links.append(labelPair(a, b));
-                }
-            }
-        );
-    }
-
-    // Each member's cluster: the smallest id key of its component, and
-    // the processor of that member, propagated through the halo until no
-    // processor changes (a cluster crossing k processor boundaries takes
-    // about k + 1 rounds)
+    // Members: a close partner (the test of formClusters); each member's
+    // cluster: the smallest id key of its component, the processor of that
+    // member and its position
+    const DynamicList<labelPair> links
+    (
+        clusterLinks(xh, Rh, Sh, Kh, keyh, rCut, kappa0)
+    );
     scalarField key(nh, -1);
     labelList owner(nh, -1);
     pointField xMin(xh);
-    for (const labelPair& l : links)
-    {
-        for (const label e : {l.first(), l.second()})
-        {
-            key[e] = keyh[e];
-        }
-    }
-    for (label i = 0; i < n; ++i)
-    {
-        owner[i] = key[i] >= 0 ? Pstream::myProcNo() : -1;
-    }
-    halo.updateHalo(owner);
-    while (true)
-    {
-        labelList parent(identity(nh));
-        for (const labelPair& l : links)
-        {
-            const label ra = root(parent, l.first());
-            const label rb = root(parent, l.second());
-            parent[max(ra, rb)] = min(ra, rb);
-        }
-        // The smallest key of each component (at its root)
-        labelList best(identity(nh));
-        for (label e = 0; e < nh; ++e)
-        {
-            if (key[e] >= 0)
-            {
-                const label r = root(parent, e);
-                if (key[e] < key[best[r]])
-                {
-                    best[r] = e;
-                }
-            }
-        }
-        bool changed = false;
-        for (label i = 0; i < n; ++i)
-        {
-            const label b = best[root(parent, i)];
-            if (key[i] >= 0 && key[b] < key[i])
-            {
-                key[i] = key[b];
-                owner[i] = owner[b];
-                xMin[i] = xMin[b];
-                changed = true;
-            }
-        }
-        if (!returnReduce(changed, orOp<bool>()))
-        {
-            break;
-        }
-        halo.updateHalo(key);
-        halo.updateHalo(owner);
-        halo.updateHaloPoints(xMin);
-    }
+    labelComponents(halo, links, keyh, n, key, owner, xMin);
     clusterKey = SubField<scalar>(key, n);
     solver = SubList<label>(owner, n);
     reach = 0;
@@ -927,22 +994,10 @@ void Foam::BemNearField<CloudType>::gatherParcels
     const processorHalo& halo = *gp.halo;
     // The processors near this one: a cluster solved here was last solved
     // by one of them (its smallest member then in their box)
-    const List<boundBox>& boxes = processorHalo::processorBoxes(cloud.mesh());
-    DynamicList<label> nearProcs;
-    forAll(boxes, proci)
-    {
-        if
-        (
-            processorHalo::reaches
-            (
-                boxes, Pstream::myProcNo(), proci, 2*reach, cyclic
-            )
-        )
-        {
-            nearProcs.append(proci);
-        }
-    }
-    gp.nearProcs.transfer(nearProcs);
+    gp.nearProcs = bemNearFieldDetail::nearProcessors
+    (
+        processorHalo::processorBoxes(cloud.mesh()), 2*reach, cyclic
+    );
     gp.x = halo.points();
     gp.R = gp.own(myR);
     gp.S = gp.own(myS);
@@ -984,15 +1039,14 @@ void Foam::BemNearField<CloudType>::gatherParcels
 
 
 template<class CloudType>
-void Foam::BemNearField<CloudType>::formClusters
+void Foam::BemNearField<CloudType>::nearestLinked
 (
     const gatheredParcels& gp,
     const scalar kappa0,
-    clusterSet& cs
+    labelList& nearest,
+    scalarField& nearestGap
 ) const
 {
-    using namespace bemNearFieldDetail;
-
     const label N = gp.x.size();
     const pointField& x = gp.x;
     const tensorField& R = gp.R;
@@ -1000,16 +1054,13 @@ void Foam::BemNearField<CloudType>::formClusters
     const scalarField& K = gp.K;
     const labelList& rank = gp.rank;
 
-    // The nearest linked neighbour of each parcel and its gap (a linked
-    // pair is in one cluster: the members of the clusters solved here
-    // have all their partners among the gathered parcels)
+    // A linked pair is in one cluster: the members of the clusters solved
+    // here have all their partners among the gathered parcels
     scalar rCut = 0;
     for (label k = 0; k < N; ++k)
     {
         rCut = max(rCut, cmptMax(S[k])*(2 + clusterGap_));
     }
-    labelList& nearest = cs.nearest;
-    scalarField& nearestGap = cs.nearestGap;
     nearest.setSize(N);
     nearest = -1;
     nearestGap.setSize(N);
@@ -1029,8 +1080,10 @@ void Foam::BemNearField<CloudType>::formClusters
                 // processor
                 const label i = rank[a] < rank[b] ? a : b;
                 const label j = i == a ? b : a;
-                const scalar g =
-                    centreLineGap(S[i], R[i], S[j], R[j], x[i] - x[j], r2);
+                const scalar g = bemNearFieldDetail::centreLineGap
+                (
+                    S[i], R[i], S[j], R[j], x[i] - x[j], r2
+                );
                 const scalar aMin = min(cmptMin(S[a]), cmptMin(S[b]));
                 if (g < clusterGap_*aMin)
                 {
@@ -1048,6 +1101,22 @@ void Foam::BemNearField<CloudType>::formClusters
             }
         );
     }
+}
+
+
+template<class CloudType>
+void Foam::BemNearField<CloudType>::formClusters
+(
+    const gatheredParcels& gp,
+    const scalar kappa0,
+    clusterSet& cs
+) const
+{
+    using namespace bemNearFieldDetail;
+
+    const label N = gp.x.size();
+    const pointField& x = gp.x;
+    nearestLinked(gp, kappa0, cs.nearest, cs.nearestGap);
 
     // Clusters by key (the smallest member id: their sorted order), the
     // members in sorted order; those solved here first, then one index
