@@ -1041,19 +1041,16 @@ void Foam::bemSolver::computeOutputs()
             E[i] += (c4pi*pcQ_[k]/kappa0_/(r*r*r))*d;
         }
     }
-    if (withEnergy_ && direct)
+    if (withEnergy_)
     {
         for (const particle& pt : particles_)
         {
             shapeData& sd = *shapes_[pt.shape];
-            if (pt.uniformF && sd.unitPotential.empty())
+            if (direct && pt.uniformF && sd.unitPotential.empty())
             {
                 sd.unitPotential = sd.mesh->unitPotential();
             }
         }
-    }
-    if (withEnergy_)
-    {
         addFreePotential(sigmaFall, direct ? &shift : nullptr, phi);
     }
 
