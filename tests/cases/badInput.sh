@@ -230,6 +230,9 @@ badCase smallSelfFieldRadius 'electrostaticsModel directCoulomb;' \
 badCase negativeLatticeCorrectionSources 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; latticeCorrectionSources -1; }' \
     'Entry latticeCorrectionSources = -1 in .* must be >= 0'
+badCase negativePatchPairCorrectionCharges 'electrostaticsModel directCoulomb;' \
+    'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; patchPairCorrectionCharges -2; }' \
+    'Entry patchPairCorrectionCharges = -2 in .* must be >= 0'
 badCase unknownSelfFieldSampling 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel meshPoisson; meshPoissonCoeffs { radius 1e-3; selfFieldSampling cells; }' \
     'Entry selfFieldSampling = cells in .* must be one of 3\(points charges auto\)'

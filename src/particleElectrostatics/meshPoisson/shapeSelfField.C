@@ -809,6 +809,92 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solve
 }
 
 
+Foam::List<Foam::vector> Foam::shapeSelfField::solvePairs
+(
+    const UList<label>& patchCells,
+    const UList<vector>& patchShifts,
+    const point& x,
+    const UList<label>& targetCells,
+    const UList<scalar>& targetWeights,
+    const UList<point>& xSources,
+    const UList<DynamicList<label>>& sourceCells,
+    const UList<DynamicList<scalar>>& sourceWeights,
+    const UList<vector>& exactPair,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = i;
+    }
+    const auto toRows = [&](const UList<label>& cells, labelList& rows)
+    {
+        rows.setSize(cells.size());
+        bool inPatch = true;
+        forAll(cells, j)
+        {
+            rows[j] = local_[cells[j]];
+            inPatch = inPatch && rows[j] >= 0;
+        }
+        return inPatch;
+    };
+    labelList targetRows;
+    const bool targetIn = toRows(targetCells, targetRows);
+    List<localProblem> problems;
+    DynamicList<label> solved;
+    if (targetIn)
+    {
+        problems.setSize(xSources.size());
+        forAll(xSources, s)
+        {
+            labelList rows;
+            if (!toRows(sourceCells[s], rows))
+            {
+                continue;
+            }
+            localProblem& lp = problems[solved.size()];
+            lp = pointProblem
+            (
+                xSources[s], rows, sourceWeights[s],
+                wallPoint, wallNormal, imageSign
+            );
+            lp.exact = exactPair[s];
+            if (lp.x.size() > 1)
+            {
+                // The image's field at the target: the average of a field
+                // harmonic within the target's S2 shape is its value at the
+                // centre
+                const vector r(x - lp.x[1]);
+                lp.exact += (lp.q[1]*k_/pow3(mag(r)))*r;
+            }
+            lp.targetRows = targetRows;
+            lp.targetW = targetWeights;
+            solved.append(s);
+        }
+        problems.setSize(solved.size());
+    }
+    List<vector> result(xSources.size(), Zero);
+    if (solved.size())
+    {
+        const List<vector> errors
+        (
+            solvePatch(assemblePatch(patchCells, patchShifts), problems)
+        );
+        forAll(solved, j)
+        {
+            result[solved[j]] = errors[j];
+        }
+    }
+    forAll(patchCells, i)
+    {
+        local_[patchCells[i]] = -1;
+    }
+    return result;
+}
+
+
 Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
 (
     const patchSystem& sys,
@@ -893,13 +979,25 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePatch
         // meshPoisson::averageOverShapes); less the exact field of the
         // local problem, what is left is the mesh's error on it
         patchGrad(sys, out, phi, true, g);
-        forAll(rows, j)
+        if (lp.targetRows.size())
         {
-            const label a = lp.src[j];
-            const vector wg(w[j]*g[rows[j]]);
-            result[s] -= a == 0 ? wg : lp.q[a]*(lp.T[a].T() & wg);
+            // A pair's: over the target's shape (whole, no images)
+            forAll(lp.targetRows, j)
+            {
+                result[s] -= lp.targetW[j]*g[lp.targetRows[j]];
+            }
+            result[s] /= sum(lp.targetW);
         }
-        result[s] /= wSum;
+        else
+        {
+            forAll(rows, j)
+            {
+                const label a = lp.src[j];
+                const vector wg(w[j]*g[rows[j]]);
+                result[s] -= a == 0 ? wg : lp.q[a]*(lp.T[a].T() & wg);
+            }
+            result[s] /= wSum;
+        }
         result[s] -= lp.exact;
     }
     return result;
