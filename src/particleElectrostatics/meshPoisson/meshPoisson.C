@@ -1289,6 +1289,8 @@ void Foam::meshPoisson::removeSelfFields
     const shapeAndCopies shape{*this, translations};
     const wallPlaneNear wallPlane{*this};
     const shapeClear clear{*this};
+    pointSelfField_.setSize(nReal);
+    pointSelfField_ = Zero;
     scalarField wLocal, wImaged;
     shapeWeightsHere(origin, nReal, wLocal, wImaged);
     // In parallel a shape split between processors is solved by its owner
@@ -1377,6 +1379,10 @@ void Foam::meshPoisson::removeSelfFields
             (
                 xs_[i], celli, neighbourhood, shape, wallPlane, clear
             );
+        }
+        else if (selfFieldSampling_ == selfFieldSamplingType::automatic)
+        {
+            pointSelfField_[i] = s;
         }
         shapeField_[i] -= qw*s;
     }
@@ -1485,15 +1491,16 @@ bool Foam::meshPoisson::patchCrossesProcessors(const point& x) const
 }
 
 
-template<class Neighbourhood, class Shape, class WallPlane>
-void Foam::meshPoisson::removeSplitSelfFields
+template<class Neighbourhood, class Shape>
+Foam::List<Foam::DynamicList<Foam::shapeSelfField::patchPart>>
+Foam::meshPoisson::gatherPatchParts
 (
-    const labelUList& split,
+    const UList<point>& x,
     const UList<scalar>& Vref,
+    const UList<List<point>>& xSources,
     const Neighbourhood& neighbourhood,
-    const Shape& shape,
-    const WallPlane& wallPlane
-)
+    const Shape& shape
+) const
 {
     // Requests to every processor whose mesh is within the patch radius
     const scalar reach = selfField_->patchRadius();
@@ -1502,16 +1509,17 @@ void Foam::meshPoisson::removeSplitSelfFields
     List<DynamicList<label>> reqId(nProcs);
     List<DynamicList<point>> reqX(nProcs);
     List<DynamicList<scalar>> reqV(nProcs);
-    forAll(split, r)
+    List<DynamicList<List<point>>> reqSources(nProcs);
+    forAll(x, r)
     {
-        const point& x = xs_[split[r]];
         for (label proci = 0; proci < nProcs; ++proci)
         {
-            if (boxes[proci].overlaps(x, sqr(reach)))
+            if (boxes[proci].overlaps(x[r], sqr(reach)))
             {
                 reqId[proci].append(r);
-                reqX[proci].append(x);
+                reqX[proci].append(x[r]);
                 reqV[proci].append(Vref[r]);
+                reqSources[proci].append(xSources[r]);
             }
         }
     }
@@ -1521,7 +1529,8 @@ void Foam::meshPoisson::removeSplitSelfFields
         if (reqId[proci].size())
         {
             UOPstream os(proci, requests);
-            os << reqId[proci] << reqX[proci] << reqV[proci];
+            os << reqId[proci] << reqX[proci] << reqV[proci]
+               << reqSources[proci];
         }
     }
     labelList requestSizes;
@@ -1539,6 +1548,7 @@ void Foam::meshPoisson::removeSplitSelfFields
         const labelList ids(is);
         const pointField xr(is);
         const scalarField Vr(is);
+        const List<List<point>> sources(is);
         List<shapeSelfField::patchPart> parts(ids.size());
         forAll(ids, j)
         {
@@ -1552,6 +1562,15 @@ void Foam::meshPoisson::removeSplitSelfFields
                 cells, shifts, shapeCells, w, xr[j], reach, Vr[j],
                 cellGid_, neighbourGid_
             );
+            parts[j].sourceCells.setSize(sources[j].size());
+            parts[j].sourceWeights.setSize(sources[j].size());
+            forAll(sources[j], s)
+            {
+                shape(sources[j][s], shapeCells, w);
+                parts[j].sourceCells[s] =
+                    UIndirectList<label>(cellGid_, shapeCells)();
+                parts[j].sourceWeights[s] = w;
+            }
         }
         UOPstream os(proci, answers);
         os << ids;
@@ -1563,8 +1582,7 @@ void Foam::meshPoisson::removeSplitSelfFields
     labelList answerSizes;
     answers.finishedSends(answerSizes);
 
-    // The owners solve
-    List<DynamicList<shapeSelfField::patchPart>> partsOf(split.size());
+    List<DynamicList<shapeSelfField::patchPart>> partsOf(x.size());
     for (label proci = 0; proci < nProcs; ++proci)
     {
         if (!answerSizes[proci])
@@ -1580,6 +1598,30 @@ void Foam::meshPoisson::removeSplitSelfFields
             partsOf[r].append(p);
         }
     }
+    return partsOf;
+}
+
+
+template<class Neighbourhood, class Shape, class WallPlane>
+void Foam::meshPoisson::removeSplitSelfFields
+(
+    const labelUList& split,
+    const UList<scalar>& Vref,
+    const Neighbourhood& neighbourhood,
+    const Shape& shape,
+    const WallPlane& wallPlane
+)
+{
+    const scalar reach = selfField_->patchRadius();
+    const List<DynamicList<shapeSelfField::patchPart>> partsOf
+    (
+        gatherPatchParts
+        (
+            pointField(xs_, split), Vref,
+            List<List<point>>(split.size()), neighbourhood, shape
+        )
+    );
+    // The owners solve
     forAll(split, r)
     {
         const label i = split[r];
@@ -2271,27 +2313,29 @@ void Foam::meshPoisson::addPatchPairCorrection
     // target and evaluation, so for targets with at most
     // latticeMaxSources_ sources within 2R, and radii of at most 4 cells
     // (above, the error is below 1 % and the patches costly), and only
-    // while at most patchPairMaxCharges_ targets need it
+    // while at most patchPairMaxCharges_ targets need it. In parallel a
+    // target whose shape or patch reaches another processor is solved on
+    // the patch gathered from every processor within reach (as its self
+    // field): the same as in serial
     const scalar R = radius_;
     const scalar D = selfField_->patchRadius();
     const label nReal = nRealSources_;
     scalarField wLocal, wImaged;
     shapeWeightsHere(origin_, nReal, wLocal, wImaged);
-    const auto wholeClearOfWalls = [&](const label i)
+    scalarField imaged(wImaged);
+    if (Pstream::parRun())
     {
-        return
-            wImaged[i] == 0
-         && wLocal[i] >= (1 - 1e-12)*shapeSum_[i]
-         && shapeStart_[i + 1] > shapeStart_[i];
-    };
+        halo_->sumToOwners(imaged);
+    }
     // A source is a real charge or a cyclic copy (an image's shape is part
-    // of its charge's deposit)
+    // of its charge's deposit), its shape clear of the walls
     const auto sourceOf = [&](const label s)
     {
-        return
+        const label i =
             s < nReal ? s
           : sourceSign_[s] == 1 && sourceT_[s] == tensor::I ? origin_[s]
           : -1;
+        return i >= 0 && wImaged[i] == 0 && clearOfWalls(xs_[s]) ? i : -1;
     };
     const scalarField& V = mesh_.V().field();
     List<DynamicList<label>> sources(xT.size());
@@ -2300,8 +2344,7 @@ void Foam::meshPoisson::addPatchPairCorrection
         xT, xs_, min(4*R, D - R), 0,
         [&](const label t, const label s, const vector&, const scalar r2)
         {
-            const label i = sourceOf(s);
-            if (nNear[t] <= latticeMaxSources_ && r2 > 0 && i >= 0 && wholeClearOfWalls(i))
+            if (nNear[t] <= latticeMaxSources_ && r2 > 0 && sourceOf(s) >= 0)
             {
                 sources[t].append(s);
             }
@@ -2312,24 +2355,24 @@ void Foam::meshPoisson::addPatchPairCorrection
     const shapeAndCopies shape{*this, translations};
     const wallPlaneNear wallPlane{*this};
     const shapeClear clear{*this};
-    // The targets and their sources whose shapes lie within the patch, two
-    // of the target's cells inside its edge
-    DynamicList<label> targets;
+    // The targets (here: shape and patch on this processor; split: not)
+    // and their sources whose shapes lie within the patch, two of the
+    // target's cells inside its edge
+    DynamicList<label> targets, split;
+    DynamicList<scalar> splitVref;
     forAll(xT, t)
     {
-        if (sources[t].empty() || !wholeClearOfWalls(t))
+        const label celli = shapeCell(t);
+        if
+        (
+            sources[t].empty() || celli < 0 || imaged[t] > 0
+         || !clearOfWalls(xT[t])
+        )
         {
             continue;
         }
-        const label celli = shapeCell(t);
         const scalar h = cbrt(V[celli]);
-        if
-        (
-            R > 4*h*(1 + 1e-9)
-         || selfField_->uniformAt(celli, neighbourhood)
-         || !clear(xT[t])
-         || patchCrossesProcessors(xT[t])
-        )
+        if (R > 4*h*(1 + 1e-9) || selfField_->uniformAt(celli, neighbourhood))
         {
             continue;
         }
@@ -2343,15 +2386,28 @@ void Foam::meshPoisson::addPatchPairCorrection
             }
         }
         sources[t].transfer(inReach);
-        if (sources[t].size())
+        if (sources[t].empty())
+        {
+            continue;
+        }
+        const bool here =
+            wLocal[t] >= (1 - 1e-12)*shapeSum_[t]
+         && clear(xT[t]) && !patchCrossesProcessors(xT[t]);
+        if (here)
         {
             targets.append(t);
+        }
+        else if (Pstream::parRun())
+        {
+            split.append(t);
+            splitVref.append(V[celli]);
         }
     }
     // Only for a few charges: each costs a patch factorisation (about 60 ms
     // on the pipe at 2 cells: a cloud of 200 charges in it would take 15x
     // its solve)
-    const label nTargets = returnReduce(targets.size(), sumOp<label>());
+    const label nTargets =
+        returnReduce(targets.size() + split.size(), sumOp<label>());
     const bool apply = nTargets <= patchPairMaxCharges_;
     if (nEvaluations_ == 1)
     {
@@ -2366,30 +2422,102 @@ void Foam::meshPoisson::addPatchPairCorrection
         return;
     }
     const scalar k = pairwiseCoulomb(epsilonR_).k();
-    for (const label t : targets)
+    const auto sourcesOf = [&](const label t, List<point>& xS, List<vector>& exact)
     {
-        List<point> xS(sources[t].size());
-        List<vector> exact(sources[t].size());
-        forAll(sources[t], j)
+        xS = pointField(xs_, sources[t]);
+        exact.setSize(xS.size());
+        forAll(xS, j)
         {
-            const label s = sources[t][j];
-            xS[j] = xs_[s];
             const vector r(xT[t] - xS[j]);
             const scalar rm = mag(r);
             exact[j] = (k*(1 - shapedCorrection(rm/R))/pow3(rm))*r;
         }
-        const List<vector> errors
-        (
-            selfField_->pairErrors
-            (
-                xT[t], xS, exact, neighbourhood, shape, wallPlane
-            )
-        );
-        forAll(xS, j)
+    };
+    // Under auto a self field from the points (a strong field) is solved at
+    // the charge on the same patch, at the cost of one more back
+    // substitution: between the points it is off by a few % of itself (0.9
+    // % of the field of a pair 1.6 R apart in the pipe at 2 cells, 0.03 %
+    // at the charge), and the points' samples near a processor boundary
+    // use patches cut there
+    const auto fromPoints = [&](const label t)
+    {
+        return pointSelfField_[t] != vector::zero;
+    };
+    const auto subtract =
+        [&](const label t, const UList<vector>& errors, const vector& self)
+    {
+        forAll(errors, j)
         {
             farField_[t] -= qs_[sources[t][j]]*errors[j];
         }
+        if (fromPoints(t))
+        {
+            farField_[t] += qs_[t]*(pointSelfField_[t] - self);
+        }
+    };
+    List<point> xS;
+    List<vector> exact;
+    for (const label t : targets)
+    {
+        sourcesOf(t, xS, exact);
+        vector selfAtCharge(Zero);
+        subtract
+        (
+            t,
+            selfField_->pairErrors
+            (
+                xT[t], xS, exact, neighbourhood, shape, wallPlane,
+                fromPoints(t) ? &selfAtCharge : nullptr
+            ),
+            selfAtCharge
+        );
     }
+    if (Pstream::parRun())
+    {
+        List<List<point>> xSplit(split.size());
+        forAll(split, r)
+        {
+            xSplit[r] = pointField(xs_, sources[split[r]]);
+        }
+        const List<DynamicList<shapeSelfField::patchPart>> partsOf
+        (
+            gatherPatchParts
+            (
+                pointField(xT, split), splitVref, xSplit, neighbourhood, shape
+            )
+        );
+        forAll(split, r)
+        {
+            const label t = split[r];
+            sourcesOf(t, xS, exact);
+            point wallPoint(Zero);
+            vector wallNormal(Zero);
+            scalar imageSign = 0;
+            wallPlane(xT[t], D, wallPoint, wallNormal, imageSign);
+            vector selfAtCharge(Zero);
+            subtract
+            (
+                t,
+                selfField_->solvePairParts
+                (
+                    partsOf[r], xT[t], xS, exact,
+                    wallPoint, wallNormal, imageSign,
+                    fromPoints(t) ? &selfAtCharge : nullptr
+                ),
+                selfAtCharge
+            );
+        }
+    }
+}
+
+
+bool Foam::meshPoisson::clearOfWalls(const point& y) const
+{
+    point p(Zero);
+    vector n(Zero);
+    scalar sign = 0;
+    nearestWallPlane(y, 2*radius_, p, n, sign);
+    return sign == 0 || mag((y - p) & n) >= radius_;
 }
 
 

@@ -822,74 +822,121 @@ Foam::List<Foam::vector> Foam::shapeSelfField::solvePairs
     const UList<vector>& exactPair,
     const point& wallPoint,
     const vector& wallNormal,
-    const scalar imageSign
+    const scalar imageSign,
+    vector* self
 ) const
 {
     forAll(patchCells, i)
     {
         local_[patchCells[i]] = i;
     }
-    const auto toRows = [&](const UList<label>& cells, labelList& rows)
+    // Each shape's rows, empty where it does not lie within the patch
+    const auto toRows = [&](const UList<label>& cells)
     {
-        rows.setSize(cells.size());
-        bool inPatch = true;
+        labelList rows(cells.size());
         forAll(cells, j)
         {
             rows[j] = local_[cells[j]];
-            inPatch = inPatch && rows[j] >= 0;
+            if (rows[j] < 0)
+            {
+                return labelList();
+            }
         }
-        return inPatch;
+        return rows;
     };
-    labelList targetRows;
-    const bool targetIn = toRows(targetCells, targetRows);
-    List<localProblem> problems;
-    DynamicList<label> solved;
-    if (targetIn)
+    const labelList targetRows(toRows(targetCells));
+    List<labelList> sourceRows(xSources.size());
+    List<scalarField> w(xSources.size());
+    forAll(xSources, s)
     {
-        problems.setSize(xSources.size());
-        forAll(xSources, s)
-        {
-            labelList rows;
-            if (!toRows(sourceCells[s], rows))
-            {
-                continue;
-            }
-            localProblem& lp = problems[solved.size()];
-            lp = pointProblem
-            (
-                xSources[s], rows, sourceWeights[s],
-                wallPoint, wallNormal, imageSign
-            );
-            lp.exact = exactPair[s];
-            if (lp.x.size() > 1)
-            {
-                // The image's field at the target: the average of a field
-                // harmonic within the target's S2 shape is its value at the
-                // centre
-                const vector r(x - lp.x[1]);
-                lp.exact += (lp.q[1]*k_/pow3(mag(r)))*r;
-            }
-            lp.targetRows = targetRows;
-            lp.targetW = targetWeights;
-            solved.append(s);
-        }
-        problems.setSize(solved.size());
+        sourceRows[s] = toRows(sourceCells[s]);
+        w[s] = sourceWeights[s];
     }
     List<vector> result(xSources.size(), Zero);
-    if (solved.size())
+    if (targetRows.size())
     {
-        const List<vector> errors
+        result = solvePairRows
         (
-            solvePatch(assemblePatch(patchCells, patchShifts), problems)
+            assemblePatch(patchCells, patchShifts), x, targetRows,
+            targetWeights, xSources, sourceRows, w, exactPair,
+            wallPoint, wallNormal, imageSign, self
         );
-        forAll(solved, j)
-        {
-            result[solved[j]] = errors[j];
-        }
     }
     forAll(patchCells, i)
     {
         local_[patchCells[i]] = -1;
+    }
+    return result;
+}
+
+
+Foam::List<Foam::vector> Foam::shapeSelfField::solvePairRows
+(
+    const patchSystem& sys,
+    const point& x,
+    const labelUList& targetRows,
+    const UList<scalar>& targetWeights,
+    const UList<point>& xSources,
+    const UList<labelList>& sourceRows,
+    const UList<scalarField>& sourceWeights,
+    const UList<vector>& exactPair,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign,
+    vector* self
+) const
+{
+    List<localProblem> problems(xSources.size() + 1);
+    DynamicList<label> solved;
+    forAll(xSources, s)
+    {
+        if (sourceRows[s].empty())
+        {
+            continue;
+        }
+        localProblem& lp = problems[solved.size()];
+        lp = pointProblem
+        (
+            xSources[s], sourceRows[s], sourceWeights[s],
+            wallPoint, wallNormal, imageSign
+        );
+        lp.exact = exactPair[s];
+        if (lp.x.size() > 1)
+        {
+            // The image's field at the target: the average of a field
+            // harmonic within the target's S2 shape is its value at the
+            // centre
+            const vector r(x - lp.x[1]);
+            lp.exact += (lp.q[1]*k_/pow3(mag(r)))*r;
+        }
+        lp.targetRows = targetRows;
+        lp.targetW = targetWeights;
+        solved.append(s);
+    }
+    if (self)
+    {
+        problems[solved.size()] = pointProblem
+        (
+            x, targetRows, targetWeights, wallPoint, wallNormal, imageSign
+        );
+        problems.setSize(solved.size() + 1);
+    }
+    else
+    {
+        problems.setSize(solved.size());
+    }
+    List<vector> result(xSources.size(), Zero);
+    if (problems.size())
+    {
+        const List<vector> errors(solvePatch(sys, problems));
+        forAll(solved, j)
+        {
+            result[solved[j]] = errors[j];
+        }
+        if (self)
+        {
+            *self = errors.last();
+        }
     }
     return result;
 }
@@ -1113,13 +1160,11 @@ Foam::shapeSelfField::patchPart Foam::shapeSelfField::part
 }
 
 
-Foam::vector Foam::shapeSelfField::solveParts
+bool Foam::shapeSelfField::mergeParts
 (
     const UList<patchPart>& parts,
-    const point& x,
-    const point& wallPoint,
-    const vector& wallNormal,
-    const scalar imageSign
+    patchSystem& sys,
+    Map<label>& row
 ) const
 {
     bool uniform = true;
@@ -1129,13 +1174,9 @@ Foam::vector Foam::shapeSelfField::solveParts
         uniform = uniform && p.uniform;
         n += p.cells.size();
     }
-    if (uniform || n == 0)
-    {
-        return Zero;
-    }
     // One row per cell, in the parts' order
-    Map<label> row(2*n);
-    patchSystem sys;
+    row.clear();
+    row.resize(2*n);
     sys.V.setSize(n);
     n = 0;
     for (const patchPart& p : parts)
@@ -1154,8 +1195,6 @@ Foam::vector Foam::shapeSelfField::solveParts
         const auto iter = row.cfind(g);
         return g < 0 || !iter.found() ? -1 : *iter;
     };
-    List<DynamicList<scalar>> shapeWeights(1);
-    DynamicList<label> rows;
     for (const patchPart& p : parts)
     {
         const patchSystem& ps = p.sys;
@@ -1192,13 +1231,70 @@ Foam::vector Foam::shapeSelfField::solveParts
                 sys.bLs.append(ps.bLs[j]);
             }
         }
+    }
+    return uniform;
+}
+
+
+namespace
+{
+
+//- The rows and weights of a shape's parts (cells as global ids; false if
+//  a cell has no row)
+bool shapeRows
+(
+    const Foam::Map<Foam::label>& row,
+    const Foam::UList<Foam::labelList>& cells,
+    const Foam::UList<Foam::scalarField>& weights,
+    Foam::DynamicList<Foam::label>& rows,
+    Foam::DynamicList<Foam::scalar>& w
+)
+{
+    forAll(cells, k)
+    {
+        forAll(cells[k], j)
+        {
+            const auto iter = row.cfind(cells[k][j]);
+            if (!iter.found())
+            {
+                return false;
+            }
+            rows.append(*iter);
+            w.append(weights[k][j]);
+        }
+    }
+    return true;
+}
+
+}
+
+
+Foam::vector Foam::shapeSelfField::solveParts
+(
+    const UList<patchPart>& parts,
+    const point& x,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign
+) const
+{
+    patchSystem sys;
+    Map<label> row;
+    if (mergeParts(parts, sys, row) || sys.V.empty())
+    {
+        return Zero;
+    }
+    DynamicList<label> rows;
+    DynamicList<scalar> w;
+    for (const patchPart& p : parts)
+    {
         forAll(p.shapeCells, j)
         {
-            const label r = rowOf(p.shapeCells[j]);
-            if (r >= 0)
+            const auto iter = row.cfind(p.shapeCells[j]);
+            if (iter.found())
             {
-                rows.append(r);
-                shapeWeights[0].append(p.shapeWeights[j]);
+                rows.append(*iter);
+                w.append(p.shapeWeights[j]);
             }
         }
     }
@@ -1207,13 +1303,64 @@ Foam::vector Foam::shapeSelfField::solveParts
         sys,
         List<localProblem>
         (
-            1,
-            pointProblem
-            (
-                x, rows, shapeWeights[0], wallPoint, wallNormal, imageSign
-            )
+            1, pointProblem(x, rows, w, wallPoint, wallNormal, imageSign)
         )
     )[0];
+}
+
+
+Foam::List<Foam::vector> Foam::shapeSelfField::solvePairParts
+(
+    const UList<patchPart>& parts,
+    const point& x,
+    const UList<point>& xSources,
+    const UList<vector>& exactPair,
+    const point& wallPoint,
+    const vector& wallNormal,
+    const scalar imageSign,
+    vector* self
+) const
+{
+    // The mesh's pair field has the truncation error on uniform meshes too:
+    // solved whatever the parts' uniformity
+    patchSystem sys;
+    Map<label> row;
+    mergeParts(parts, sys, row);
+    List<labelList> cells(parts.size());
+    List<scalarField> weights(parts.size());
+    forAll(parts, k)
+    {
+        cells[k] = parts[k].shapeCells;
+        weights[k] = parts[k].shapeWeights;
+    }
+    DynamicList<label> targetRows;
+    DynamicList<scalar> targetW;
+    if (sys.V.empty() || !shapeRows(row, cells, weights, targetRows, targetW))
+    {
+        return List<vector>(xSources.size(), Zero);
+    }
+    List<labelList> sourceRows(xSources.size());
+    List<scalarField> sourceW(xSources.size());
+    forAll(xSources, s)
+    {
+        forAll(parts, k)
+        {
+            cells[k] = parts[k].sourceCells[s];
+            weights[k] = parts[k].sourceWeights[s];
+        }
+        DynamicList<label> rows;
+        DynamicList<scalar> w;
+        if (shapeRows(row, cells, weights, rows, w))
+        {
+            sourceRows[s].transfer(rows);
+            sourceW[s].transfer(w);
+        }
+    }
+    return solvePairRows
+    (
+        sys, x, targetRows, targetW, xSources, sourceRows, sourceW,
+        exactPair, wallPoint, wallNormal, imageSign, self
+    );
 }
 
 
@@ -1226,7 +1373,8 @@ Foam::Ostream& Foam::operator<<
     const shapeSelfField::patchSystem& s = p.sys;
     os  << p.cells << s.V << s.own << s.nei << s.coeff << s.weight
         << s.magSf << s.Sf << s.corr << s.outAt << s.bRow << s.bAt << s.bSf
-        << s.bCoeff << s.lsOwn << s.lsNei << s.bLs << p.shapeCells << p.shapeWeights << p.uniform;
+        << s.bCoeff << s.lsOwn << s.lsNei << s.bLs << p.shapeCells << p.shapeWeights << p.uniform
+        << p.sourceCells << p.sourceWeights;
     return os;
 }
 
@@ -1236,7 +1384,8 @@ Foam::Istream& Foam::operator>>(Istream& is, shapeSelfField::patchPart& p)
     shapeSelfField::patchSystem& s = p.sys;
     is  >> p.cells >> s.V >> s.own >> s.nei >> s.coeff >> s.weight
         >> s.magSf >> s.Sf >> s.corr >> s.outAt >> s.bRow >> s.bAt >> s.bSf
-        >> s.bCoeff >> s.lsOwn >> s.lsNei >> s.bLs >> p.shapeCells >> p.shapeWeights >> p.uniform;
+        >> s.bCoeff >> s.lsOwn >> s.lsNei >> s.bLs >> p.shapeCells >> p.shapeWeights >> p.uniform
+        >> p.sourceCells >> p.sourceWeights;
     return is;
 }
 
