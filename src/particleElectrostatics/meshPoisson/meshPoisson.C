@@ -2328,14 +2328,14 @@ void Foam::meshPoisson::addPatchPairCorrection
         halo_->sumToOwners(imaged);
     }
     // A source is a real charge or a cyclic copy (an image's shape is part
-    // of its charge's deposit), its shape clear of the walls
+    // of its charge's deposit) not imaged here
     const auto sourceOf = [&](const label s)
     {
         const label i =
             s < nReal ? s
           : sourceSign_[s] == 1 && sourceT_[s] == tensor::I ? origin_[s]
           : -1;
-        return i >= 0 && wImaged[i] == 0 && clearOfWalls(xs_[s]) ? i : -1;
+        return i >= 0 && wImaged[i] == 0 ? i : -1;
     };
     const scalarField& V = mesh_.V().field();
     List<DynamicList<label>> sources(xT.size());
@@ -2359,15 +2359,10 @@ void Foam::meshPoisson::addPatchPairCorrection
     // and their sources whose shapes lie within the patch, two of the
     // target's cells inside its edge
     DynamicList<label> targets, split;
-    DynamicList<scalar> splitVref;
     forAll(xT, t)
     {
         const label celli = shapeCell(t);
-        if
-        (
-            sources[t].empty() || celli < 0 || imaged[t] > 0
-         || !clearOfWalls(xT[t])
-        )
+        if (sources[t].empty() || celli < 0 || imaged[t] > 0)
         {
             continue;
         }
@@ -2400,12 +2395,11 @@ void Foam::meshPoisson::addPatchPairCorrection
         else if (Pstream::parRun())
         {
             split.append(t);
-            splitVref.append(V[celli]);
         }
     }
     // Only for a few charges: each costs a patch factorisation (about 60 ms
     // on the pipe at 2 cells: a cloud of 200 charges in it would take 15x
-    // its solve)
+    // its solve); a larger sparse cloud pays the counts above
     const label nTargets =
         returnReduce(targets.size() + split.size(), sumOp<label>());
     const bool apply = nTargets <= patchPairMaxCharges_;
@@ -2420,6 +2414,37 @@ void Foam::meshPoisson::addPatchPairCorrection
     if (!apply)
     {
         return;
+    }
+    // Shapes within R of a wall's tangent plane, imaged on some processor,
+    // are not the local problems here; tested only now (each test scans
+    // the wall faces)
+    const auto keepClearOfWalls = [&](DynamicList<label>& ts)
+    {
+        label n = 0;
+        for (const label t : ts)
+        {
+            DynamicList<label> clearSources;
+            for (const label s : sources[t])
+            {
+                if (clearOfWalls(xs_[s]))
+                {
+                    clearSources.append(s);
+                }
+            }
+            sources[t].transfer(clearSources);
+            if (sources[t].size() && clearOfWalls(xT[t]))
+            {
+                ts[n++] = t;
+            }
+        }
+        ts.setSize(n);
+    };
+    keepClearOfWalls(targets);
+    keepClearOfWalls(split);
+    scalarField splitVref(split.size());
+    forAll(split, r)
+    {
+        splitVref[r] = V[shapeCell(split[r])];
     }
     const scalar k = pairwiseCoulomb(epsilonR_).k();
     const auto sourcesOf = [&](const label t, List<point>& xS, List<vector>& exact)
