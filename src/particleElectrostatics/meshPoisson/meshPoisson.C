@@ -2298,25 +2298,15 @@ void Foam::meshPoisson::addLatticeCorrection
 }
 
 
-void Foam::meshPoisson::addPatchPairCorrection
+void Foam::meshPoisson::patchPairTargets
 (
     const UList<point>& xT,
-    const labelUList& nNear
+    const labelUList& nNear,
+    List<DynamicList<label>>& sources,
+    DynamicList<label>& targets,
+    DynamicList<label>& split
 )
 {
-    // Where the lattice correction does not apply (curved, graded or
-    // non-orthogonal meshes) the mesh's pair field of overlapping shapes is
-    // off by several % at 2-3 cells per radius as on the lattice (an O-grid
-    // pipe, n = 14, R = 2 mean cells: 6 % for a pair 1.6 R apart). Each
-    // sparse target's error is found on one patch about it with every
-    // source in reach (shapeSelfField::pairErrors): one factorisation per
-    // target and evaluation, so for targets with at most
-    // latticeMaxSources_ sources within 2R, and radii of at most 4 cells
-    // (above, the error is below 1 % and the patches costly), and only
-    // while at most patchPairMaxCharges_ targets need it. In parallel a
-    // target whose shape or patch reaches another processor is solved on
-    // the patch gathered from every processor within reach (as its self
-    // field): the same as in serial
     const scalar R = radius_;
     const scalar D = selfField_->patchRadius();
     const label nReal = nRealSources_;
@@ -2338,7 +2328,7 @@ void Foam::meshPoisson::addPatchPairCorrection
         return i >= 0 && wImaged[i] == 0 ? i : -1;
     };
     const scalarField& V = mesh_.V().field();
-    List<DynamicList<label>> sources(xT.size());
+    sources.setSize(xT.size());
     forPairsWithinCutoff
     (
         xT, xs_, min(4*R, D - R), 0,
@@ -2352,13 +2342,10 @@ void Foam::meshPoisson::addPatchPairCorrection
     );
     const List<vector> translations(periodicTranslations());
     const unfoldedNeighbourhood neighbourhood{*this, translations};
-    const shapeAndCopies shape{*this, translations};
-    const wallPlaneNear wallPlane{*this};
     const shapeClear clear{*this};
     // The targets (here: shape and patch on this processor; split: not)
     // and their sources whose shapes lie within the patch, two of the
     // target's cells inside its edge
-    DynamicList<label> targets, split;
     forAll(xT, t)
     {
         const label celli = shapeCell(t);
@@ -2397,6 +2384,59 @@ void Foam::meshPoisson::addPatchPairCorrection
             split.append(t);
         }
     }
+}
+
+
+void Foam::meshPoisson::keepClearOfWalls
+(
+    const UList<point>& xT,
+    DynamicList<label>& targets,
+    UList<DynamicList<label>>& sources
+) const
+{
+    label n = 0;
+    for (const label t : targets)
+    {
+        DynamicList<label> clearSources;
+        for (const label s : sources[t])
+        {
+            if (clearOfWalls(xs_[s]))
+            {
+                clearSources.append(s);
+            }
+        }
+        sources[t].transfer(clearSources);
+        if (sources[t].size() && clearOfWalls(xT[t]))
+        {
+            targets[n++] = t;
+        }
+    }
+    targets.setSize(n);
+}
+
+
+void Foam::meshPoisson::addPatchPairCorrection
+(
+    const UList<point>& xT,
+    const labelUList& nNear
+)
+{
+    // Where the lattice correction does not apply (curved, graded or
+    // non-orthogonal meshes) the mesh's pair field of overlapping shapes is
+    // off by several % at 2-3 cells per radius as on the lattice (an O-grid
+    // pipe, n = 14, R = 2 mean cells: 6 % for a pair 1.6 R apart). Each
+    // sparse target's error is found on one patch about it with every
+    // source in reach (shapeSelfField::pairErrors): one factorisation per
+    // target and evaluation, so for targets with at most
+    // latticeMaxSources_ sources within 2R, and radii of at most 4 cells
+    // (above, the error is below 1 % and the patches costly), and only
+    // while at most patchPairMaxCharges_ targets need it. In parallel a
+    // target whose shape or patch reaches another processor is solved on
+    // the patch gathered from every processor within reach (as its self
+    // field): the same as in serial
+    List<DynamicList<label>> sources;
+    DynamicList<label> targets, split;
+    patchPairTargets(xT, nNear, sources, targets, split);
     // Only for a few charges: each costs a patch factorisation (about 60 ms
     // on the pipe at 2 cells: a cloud of 200 charges in it would take 15x
     // its solve); a larger sparse cloud pays the counts above
@@ -2415,123 +2455,134 @@ void Foam::meshPoisson::addPatchPairCorrection
     {
         return;
     }
+    const List<vector> translations(periodicTranslations());
+    const unfoldedNeighbourhood neighbourhood{*this, translations};
+    const shapeAndCopies shape{*this, translations};
+    const wallPlaneNear wallPlane{*this};
     // Shapes within R of a wall's tangent plane, imaged on some processor,
     // are not the local problems here; tested only now (each test scans
     // the wall faces)
-    const auto keepClearOfWalls = [&](DynamicList<label>& ts)
-    {
-        label n = 0;
-        for (const label t : ts)
-        {
-            DynamicList<label> clearSources;
-            for (const label s : sources[t])
-            {
-                if (clearOfWalls(xs_[s]))
-                {
-                    clearSources.append(s);
-                }
-            }
-            sources[t].transfer(clearSources);
-            if (sources[t].size() && clearOfWalls(xT[t]))
-            {
-                ts[n++] = t;
-            }
-        }
-        ts.setSize(n);
-    };
-    keepClearOfWalls(targets);
-    keepClearOfWalls(split);
-    scalarField splitVref(split.size());
-    forAll(split, r)
-    {
-        splitVref[r] = V[shapeCell(split[r])];
-    }
-    const scalar k = pairwiseCoulomb(epsilonR_).k();
-    const auto sourcesOf = [&](const label t, List<point>& xS, List<vector>& exact)
-    {
-        xS = pointField(xs_, sources[t]);
-        exact.setSize(xS.size());
-        forAll(xS, j)
-        {
-            const vector r(xT[t] - xS[j]);
-            const scalar rm = mag(r);
-            exact[j] = (k*(1 - shapedCorrection(rm/R))/pow3(rm))*r;
-        }
-    };
+    keepClearOfWalls(xT, targets, sources);
+    keepClearOfWalls(xT, split, sources);
     // Under auto a self field from the points (a strong field) is solved at
     // the charge on the same patch, at the cost of one more back
-    // substitution: between the points it is off by a few % of itself (0.9
-    // % of the field of a pair 1.6 R apart in the pipe at 2 cells, 0.03 %
-    // at the charge), and the points' samples near a processor boundary
-    // use patches cut there
-    const auto fromPoints = [&](const label t)
-    {
-        return pointSelfField_[t] != vector::zero;
-    };
-    const auto subtract =
-        [&](const label t, const UList<vector>& errors, const vector& self)
-    {
-        forAll(errors, j)
-        {
-            farField_[t] -= qs_[sources[t][j]]*errors[j];
-        }
-        if (fromPoints(t))
-        {
-            farField_[t] += qs_[t]*(pointSelfField_[t] - self);
-        }
-    };
-    List<point> xS;
-    List<vector> exact;
+    // substitution (subtractPairErrors)
     for (const label t : targets)
     {
-        sourcesOf(t, xS, exact);
+        const List<point> xS(pointField(xs_, sources[t]));
         vector selfAtCharge(Zero);
-        subtract
+        subtractPairErrors
         (
             t,
+            sources[t],
             selfField_->pairErrors
             (
-                xT[t], xS, exact, neighbourhood, shape, wallPlane,
-                fromPoints(t) ? &selfAtCharge : nullptr
+                xT[t], xS, exactPairFields(xT[t], xS), neighbourhood, shape,
+                wallPlane,
+                pointSelfField_[t] != vector::zero ? &selfAtCharge : nullptr
             ),
             selfAtCharge
         );
     }
     if (Pstream::parRun())
     {
-        List<List<point>> xSplit(split.size());
-        forAll(split, r)
-        {
-            xSplit[r] = pointField(xs_, sources[split[r]]);
-        }
-        const List<DynamicList<shapeSelfField::patchPart>> partsOf
+        addSplitPairCorrections(xT, split, sources);
+    }
+}
+
+
+Foam::List<Foam::vector> Foam::meshPoisson::exactPairFields
+(
+    const point& x,
+    const UList<point>& xS
+) const
+{
+    // Per unit source charge (H&E Eq. 8-73)
+    const scalar k = pairwiseCoulomb(epsilonR_).k();
+    List<vector> exact(xS.size());
+    forAll(xS, j)
+    {
+        const vector r(x - xS[j]);
+        const scalar rm = mag(r);
+        exact[j] = (k*(1 - shapedCorrection(rm/radius_))/pow3(rm))*r;
+    }
+    return exact;
+}
+
+
+void Foam::meshPoisson::subtractPairErrors
+(
+    const label t,
+    const labelUList& sourcesT,
+    const UList<vector>& errors,
+    const vector& selfAtCharge
+)
+{
+    forAll(errors, j)
+    {
+        farField_[t] -= qs_[sourcesT[j]]*errors[j];
+    }
+    // A self field from the points replaced by the one at the charge:
+    // between the points it is off by a few % of itself (0.9 % of the
+    // field of a pair 1.6 R apart in the pipe at 2 cells, 0.03 % at the
+    // charge), and the points' samples near a processor boundary use
+    // patches cut there
+    if (pointSelfField_[t] != vector::zero)
+    {
+        farField_[t] += qs_[t]*(pointSelfField_[t] - selfAtCharge);
+    }
+}
+
+
+void Foam::meshPoisson::addSplitPairCorrections
+(
+    const UList<point>& xT,
+    const labelUList& split,
+    const UList<DynamicList<label>>& sources
+)
+{
+    const scalarField& V = mesh_.V().field();
+    const List<vector> translations(periodicTranslations());
+    const unfoldedNeighbourhood neighbourhood{*this, translations};
+    const shapeAndCopies shape{*this, translations};
+    const wallPlaneNear wallPlane{*this};
+    scalarField Vref(split.size());
+    List<List<point>> xSplit(split.size());
+    forAll(split, r)
+    {
+        Vref[r] = V[shapeCell(split[r])];
+        xSplit[r] = pointField(xs_, sources[split[r]]);
+    }
+    const List<DynamicList<shapeSelfField::patchPart>> partsOf
+    (
+        gatherPatchParts
         (
-            gatherPatchParts
-            (
-                pointField(xT, split), splitVref, xSplit, neighbourhood, shape
-            )
+            pointField(xT, split), Vref, xSplit, neighbourhood, shape
+        )
+    );
+    forAll(split, r)
+    {
+        const label t = split[r];
+        point wallPoint(Zero);
+        vector wallNormal(Zero);
+        scalar imageSign = 0;
+        wallPlane
+        (
+            xT[t], selfField_->patchRadius(), wallPoint, wallNormal, imageSign
         );
-        forAll(split, r)
-        {
-            const label t = split[r];
-            sourcesOf(t, xS, exact);
-            point wallPoint(Zero);
-            vector wallNormal(Zero);
-            scalar imageSign = 0;
-            wallPlane(xT[t], D, wallPoint, wallNormal, imageSign);
-            vector selfAtCharge(Zero);
-            subtract
+        vector selfAtCharge(Zero);
+        subtractPairErrors
+        (
+            t,
+            sources[t],
+            selfField_->solvePairParts
             (
-                t,
-                selfField_->solvePairParts
-                (
-                    partsOf[r], xT[t], xS, exact,
-                    wallPoint, wallNormal, imageSign,
-                    fromPoints(t) ? &selfAtCharge : nullptr
-                ),
-                selfAtCharge
-            );
-        }
+                partsOf[r], xT[t], xSplit[r], exactPairFields(xT[t], xSplit[r]),
+                wallPoint, wallNormal, imageSign,
+                pointSelfField_[t] != vector::zero ? &selfAtCharge : nullptr
+            ),
+            selfAtCharge
+        );
     }
 }
 
