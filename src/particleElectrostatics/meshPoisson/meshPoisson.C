@@ -24,6 +24,25 @@
 
 #include <Eigen/QR>
 
+namespace
+{
+
+//- The exact field at r (from the source) between two S2 shapes of radius
+//  R per unit source charge, k the Coulomb constant (H&E Eq. 8-73)
+Foam::vector s2PairField
+(
+    const Foam::scalar k,
+    const Foam::scalar R,
+    const Foam::vector& r
+)
+{
+    const Foam::scalar rm = Foam::mag(r);
+    return
+        (k*(1 - Foam::meshPoisson::shapedCorrection(rm/R))/Foam::pow3(rm))*r;
+}
+
+}
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -1432,11 +1451,9 @@ void Foam::meshPoisson::removeImagedSelfField
                 return;
             }
             // The images' force on the whole shape (H&E Eq. 8-73)
-            const vector r(xs_[i] - xs_[k]);
-            const scalar mr = mag(r);
             lp.exact +=
-                sourceSign_[k]*(1 - shapedCorrection(mr/radius_))
-               *coulomb.k()/pow3(mr)*r;
+                sourceSign_[k]
+               *s2PairField(coulomb.k(), radius_, xs_[i] - xs_[k]);
             x.append(xs_[k]);
             q.append(sourceSign_[k]);
             T.append(sourceT_[k]);
@@ -2289,8 +2306,7 @@ void Foam::meshPoisson::addLatticeCorrection
             continue;
         }
         latticeGreensFunction::shape(latticePosition(xSource[j]), Rc, cellsS, wS);
-        const scalar rm = std::sqrt(r2);
-        const vector exact = (k*(1 - shapedCorrection(rm/R))/(r2*rm))*r;
+        const vector exact(s2PairField(k, R, r));
         farField_[targets[t]] +=
             qSource[j]
            *(exact - unit*lattice_->pairField(cellsT[t], wT[t], cellsS, wS));
@@ -2502,9 +2518,7 @@ Foam::List<Foam::vector> Foam::meshPoisson::exactPairFields
     List<vector> exact(xS.size());
     forAll(xS, j)
     {
-        const vector r(x - xS[j]);
-        const scalar rm = mag(r);
-        exact[j] = (k*(1 - shapedCorrection(rm/radius_))/pow3(rm))*r;
+        exact[j] = s2PairField(k, radius_, x - xS[j]);
     }
     return exact;
 }
