@@ -438,6 +438,29 @@ else:
            f"pipe n = 14, radius 0.125, a pair across the processor plane: 2 processors vs serial {dp:.1e} "
            f"(tol 1e-9), force error {ep:.2e} (< 0.005)")
 
+# 10c. Shapes cut by a curved wall at 2 mean cells per radius (0.125 m):
+#     the charge's shape reaches 0.3-0.4 R beyond the wall of the pipe
+#     (n = 14, along +y: r = 0.91, 0.925) and the sphere (n = 13, along
+#     (1, 2, 2)/3: r = 0.91), too little for its image to hold a cell
+#     centre (not deposited). The self field's local problem holds the
+#     image's S2 shape and subtracts the S2 pair's field, the one the
+#     near-field correction takes the mesh to carry (a point image's
+#     Coulomb field would count the pair's deficit twice: 16 % in the pipe
+#     at 0.925)
+cut = []
+for cavity, n, u, rr in (("pipe", 14, (0, 1.0, 0), 0.91), ("pipe", 14, (0, 1.0, 0), 0.925),
+                         ("sphere", 13, (1.0, 2.0, 2.0), 0.91)):
+    pipe = cavity == "pipe"
+    u = np.array(u)/np.linalg.norm(u)
+    xs = np.array([(np.array([0, 0, 1.0]) if pipe else np.zeros(3)) + rr*u]); qs = np.array([1e-9])
+    ref = cc.cylinder_field(xs, qs, 1.0, 2.0) if pipe else cc.kelvin_field(xs, qs, 1.0)
+    E = run(f"cutByCurvedWall_{cavity}_{rr}", xs, qs, n, coeffs="radius 0.125;",
+            blockMesh=cc.pipe_blockmesh(1.0, 2.0, n) if pipe else cc.sphere_blockmesh(1.0, n))
+    cut.append(np.linalg.norm(E[0] - ref[0])/np.linalg.norm(ref[0]) if E is not None else np.inf)
+report("selfField.cutByCurvedWall", max(cut) < 0.025,
+       f"radius 0.125 (2 mean cells), shapes cut by the wall: pipe r = 0.91, 0.925: force error {cut[0]:.2e}, "
+       f"{cut[1]:.2e}; sphere r = 0.91: {cut[2]:.2e} (< 0.025)")
+
 # 11. No self-force where the cavity is symmetric: a charge alone at the
 #     centre of the grounded sphere (n = 13: the centre of the middle cell
 #     of a mesh symmetric about it) feels none with its self field removed,
@@ -518,6 +541,24 @@ report("selfField.auto", weak < 1e-9 and strong < 1e-12 and corrected < 1e-9 and
        f"pair 0.2 apart without the pair correction: {strong:.1e} (tol 1e-12), with it (self fields at the "
        f"charges): against per charge {corrected:.1e} (tol 1e-9); weak pair across the cyclic end: points {p_[4]:.2e}, "
        f"charges {c_[4]:.2e}, auto {a_[4]:.2e}; every case with auto < 0.05 (largest {max(a_):.2e})")
+
+# 13b. At 2 mean cells per radius (0.125 m) the self field varies within
+#     a cell as much as it is large: a charge on the axis of a projected
+#     block of the sphere (n = 13, at (0.6, 0, 0), 13 V/m) feels twice the
+#     largest self field at its cell's points, of the opposite sign, and
+#     the points' interpolation leaves ~8 % of its field. auto solves it
+#     at the charge since that largest value is not small against the
+#     rest of the field (the interpolated one is)
+x2, q2 = np.array([[0.6, 0, 0]]), np.array([1e-9])
+ref = cc.kelvin_field(x2, q2, 1.0)
+e2 = {}
+for sampling in ("auto", "points"):
+    E = run(f"self_sphere_axis_{sampling}", x2, q2, 13, coeffs=f"radius 0.125; selfFieldSampling {sampling};",
+            blockMesh=cc.sphere_blockmesh(1.0, 13))
+    e2[sampling] = np.linalg.norm(E[0] - ref[0])/np.linalg.norm(ref[0]) if E is not None else np.inf
+report("selfField.autoTwoCells", e2["auto"] < 0.02 and e2["points"] > 2*e2["auto"],
+       f"sphere n = 13, radius 0.125 (2 mean cells), a charge at (0.6, 0, 0): force error auto {e2['auto']:.2e} "
+       f"(< 0.02), points {e2['points']:.2e} (> 2x)")
 
 # 14. Shapes split between processors lose their self field too: on the
 #     grounded sphere (n = 13, decomposed along x, then y: 2 and 4

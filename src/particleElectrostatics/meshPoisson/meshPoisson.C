@@ -21,27 +21,9 @@
 #include "syncTools.H"
 #include "PstreamBuffers.H"
 #include "facePlanes.H"
+#include "s2Shape.H"
 
 #include <Eigen/QR>
-
-namespace
-{
-
-//- The exact field at r (from the source) between two S2 shapes of radius
-//  R per unit source charge, k the Coulomb constant (H&E Eq. 8-73)
-Foam::vector s2PairField
-(
-    const Foam::scalar k,
-    const Foam::scalar R,
-    const Foam::vector& r
-)
-{
-    const Foam::scalar rm = Foam::mag(r);
-    return
-        (k*(1 - Foam::meshPoisson::shapedCorrection(rm/R))/Foam::pow3(rm))*r;
-}
-
-}
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -1370,18 +1352,22 @@ void Foam::meshPoisson::removeSelfFields
             selfFieldSampling_ == selfFieldSamplingType::charges;
         if (!atCharge)
         {
+            const bool automatic =
+                selfFieldSampling_ == selfFieldSamplingType::automatic;
+            scalar scale = 0;
             s = selfField_->field
             (
-                xs_[i], celli, neighbourhood, shape, wallPlane, clear
+                xs_[i], celli, neighbourhood, shape, wallPlane, clear,
+                automatic ? &scale : nullptr
             );
-            // auto decides on the points' value (cached: each point is
-            // solved once): shapeField_[i]/shapeSum_[i] is the mesh field
-            // at the charge (the whole shape is here), its self field
-            // included
+            // auto decides on the scale of the points' interpolation error
+            // (cached: each point is solved once): shapeField_[i]/
+            // shapeSum_[i] is the mesh field at the charge (the whole
+            // shape is here), its self field included
             const vector self(qw*s/shapeSum_[i]);
             atCharge =
-                selfFieldSampling_ == selfFieldSamplingType::automatic
-             && mag(self)
+                automatic
+             && mag(qw)*scale/shapeSum_[i]
               > selfFieldAtChargeRatio*mag(shapeField_[i]/shapeSum_[i] - self);
         }
         if (atCharge && gatherPatches && patchCrossesProcessors(xs_[i]))
@@ -1433,7 +1419,6 @@ void Foam::meshPoisson::removeImagedSelfField
     }
     const label nReal = shapeSum_.size();
     shapeSelfField::localProblem lp;
-    lp.shaped = true;
     DynamicList<point> x(1, xs_[i]);
     DynamicList<scalar> q(1, scalar(1));
     DynamicList<tensor> T(1, tensor::I);
@@ -1453,7 +1438,7 @@ void Foam::meshPoisson::removeImagedSelfField
             // The images' force on the whole shape (H&E Eq. 8-73)
             lp.exact +=
                 sourceSign_[k]
-               *s2PairField(coulomb.k(), radius_, xs_[i] - xs_[k]);
+               *s2Shape::pairField(coulomb.k(), radius_, xs_[i] - xs_[k]);
             x.append(xs_[k]);
             q.append(sourceSign_[k]);
             T.append(sourceT_[k]);
@@ -2306,7 +2291,7 @@ void Foam::meshPoisson::addLatticeCorrection
             continue;
         }
         latticeGreensFunction::shape(latticePosition(xSource[j]), Rc, cellsS, wS);
-        const vector exact(s2PairField(k, R, r));
+        const vector exact(s2Shape::pairField(k, R, r));
         farField_[targets[t]] +=
             qSource[j]
            *(exact - unit*lattice_->pairField(cellsT[t], wT[t], cellsS, wS));
@@ -2518,7 +2503,7 @@ Foam::List<Foam::vector> Foam::meshPoisson::exactPairFields
     List<vector> exact(xS.size());
     forAll(xS, j)
     {
-        exact[j] = s2PairField(k, radius_, x - xS[j]);
+        exact[j] = s2Shape::pairField(k, radius_, x - xS[j]);
     }
     return exact;
 }
@@ -2742,7 +2727,7 @@ void Foam::meshPoisson::addNearField
         const auto correction = [&](const label s, const vector& r, const scalar r2)
         {
             const scalar rm = std::sqrt(r2);
-            return (k*qs[s]*shapedCorrection(rm/R)/(r2*rm))*r;
+            return (k*qs[s]*s2Shape::pairDeficit(rm/R)/(r2*rm))*r;
         };
 
         // The far part: after a solve, or for charges that changed or

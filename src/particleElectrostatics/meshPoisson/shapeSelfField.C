@@ -4,6 +4,7 @@
 
 #include "shapeSelfField.H"
 #include "pairwiseCoulomb.H"
+#include "s2Shape.H"
 #include "emptyFvPatch.H"
 #include "cyclicFvPatch.H"
 #include "surfaceFields.H"
@@ -195,14 +196,23 @@ Foam::scalar Foam::shapeSelfField::tetWeights
 Foam::vector Foam::shapeSelfField::interpolate
 (
     const point& x,
-    const label c
+    const label c,
+    scalar* largest
 ) const
 {
     vector valueC(Zero);
     const labelList& cPoints = mesh_.cellPoints()[c];
+    if (largest)
+    {
+        *largest = 0;
+    }
     for (const label pointi : cPoints)
     {
         valueC += pointField_[pointi];
+        if (largest)
+        {
+            *largest = max(*largest, mag(pointField_[pointi]));
+        }
     }
     valueC /= cPoints.size();
 
@@ -349,8 +359,9 @@ Eigen::SparseMatrix<double> patchMatrix(const System& sys)
 
 //- The exact potential per unit charge (and its gradient) at the cells
 //  around the patch and at the boundary points: the sources of the local
-//  problem lp in free space (point charges, or S2 shapes of radius R); k
-//  the Coulomb constant
+//  problem lp in free space, S2 shapes of radius R (a wall face within R
+//  of one holds the shape's potential, which the mesh's deposit
+//  approximates, not a point's); k the Coulomb constant
 template<class System>
 void exactValues
 (
@@ -367,22 +378,11 @@ void exactValues
         gradY = Zero;
         forAll(lp.x, a)
         {
-            const vector r(y - lp.x[a]);
-            const scalar mr = mag(r);
-            const scalar kq = k*lp.q[a];
-            if (lp.shaped && mr < R)
-            {
-                // The S2 shape's potential within R: its charge within r
-                // is q (4 xi^3 - 3 xi^4), xi = r/R (H&E section 8-3)
-                const scalar xi = mr/R;
-                phiY += kq*(2 - 2*sqr(xi) + pow3(xi))/R;
-                gradY -= (kq*(4 - 3*xi)/pow3(R))*r;
-            }
-            else
-            {
-                phiY += kq/mr;
-                gradY -= (kq/pow3(mr))*r;
-            }
+            scalar phiA;
+            vector gradA;
+            s2Shape::potential(k*lp.q[a], R, y - lp.x[a], phiA, gradA);
+            phiY += phiA;
+            gradY += gradA;
         }
     };
     vector unused;
@@ -709,7 +709,6 @@ Foam::shapeSelfField::localProblem Foam::shapeSelfField::pointProblem
     lp.x.setSize(1, x);
     lp.q.setSize(1, 1);
     lp.T.setSize(1, tensor::I);
-    lp.shaped = false;
     lp.rows = rows;
     lp.w = weights;
     lp.src.setSize(rows.size(), 0);
@@ -722,13 +721,13 @@ Foam::shapeSelfField::localProblem Foam::shapeSelfField::pointProblem
     const scalar h = (x - wallPoint) & wallNormal;
     if (imageSign != 0 && mag(h) > 1e-12*mag(x - wallPoint) + VSMALL)
     {
-        // The image in the wall's plane, its exact field subtracted
+        // The image in the wall's plane, its exact field on the shape
+        // subtracted (the S2 pair's: see Description)
         const point xImage(x - 2*h*wallNormal);
         lp.x.append(xImage);
         lp.q.append(imageSign);
         lp.T.append(tensor::I - 2*sqr(wallNormal));
-        const vector ri(x - xImage);
-        lp.exact = (imageSign*k_/pow3(mag(ri)))*ri;
+        lp.exact = imageSign*s2Shape::pairField(k_, shapeRadius_, x - xImage);
     }
     return lp;
 }
