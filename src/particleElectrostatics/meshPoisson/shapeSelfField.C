@@ -201,20 +201,18 @@ Foam::vector Foam::shapeSelfField::interpolate
 ) const
 {
     vector valueC(Zero);
+    scalar largestHere = 0;
     const labelList& cPoints = mesh_.cellPoints()[c];
-    if (largest)
-    {
-        *largest = 0;
-    }
     for (const label pointi : cPoints)
     {
         valueC += pointField_[pointi];
-        if (largest)
-        {
-            *largest = max(*largest, mag(pointField_[pointi]));
-        }
+        largestHere = max(largestHere, mag(pointField_[pointi]));
     }
     valueC /= cPoints.size();
+    if (largest)
+    {
+        *largest = largestHere;
+    }
 
     // In the tetrahedron with the largest smallest barycentric weight
     scalar minWeight = -GREAT;
