@@ -25,7 +25,10 @@ What counts as a read (comments stripped, calls may span lines):
      literal argument (every literal of the call counts):
      readPositive, readFinite, readPoisson, readParcelScalar, readScalar,
      readLabel, oneOf, and the lambda `get(dict, "key", positive)`
-     (RaseraTriboCharging); Function1<Type>::New("key", dict).
+     (RaseraTriboCharging); Function1<Type>::New("key", dict); and
+     getChecked / getCheckedOrDefault(dict, "key", ...) (checkedEntry.H),
+     whose second argument is the key (their other literals are range
+     texts).
   3. A member call whose key is an identifier defined in the same file as
      a word constant with string literals (`const word key(c ? "a" : "b")`)
      reads those literals.
@@ -89,8 +92,9 @@ REVIEWED = {
              ' chargedDPMFoam case (transportProperties)'),
     # --- helpers: the key is the helper's parameter; the literal keys of
     #     the helper's calls are scanned (HELPERS, the `get` lambda)
-    ('EllipsoidCollision.C', 'key'):
-        ([], 'readPositive(dict, key): helper, its calls are scanned'),
+    ('checkedEntry.H', 'key'):
+        ([], 'getChecked/getCheckedOrDefault(dict, key, ...): helpers,'
+             ' calls scanned'),
     ('InducedDipoleNearField.C', 'key'):
         ([], 'readPositive/readLabel(key, default, ...): helpers, calls'
              ' scanned'),
@@ -273,6 +277,9 @@ METHOD_CALL = re.compile(
 RECEIVER = re.compile(r'([A-Za-z_]\w*)\s*(?:\(\s*\))?\s*$')
 HELPER_CALL = re.compile(
     r'(?<![\w.>:])(?P<name>' + '|'.join(HELPERS) + r'|get)\s*(?=\()')
+KEYED_HELPER_CALL = re.compile(
+    r'(?<![\w.>:])(?P<name>getChecked|getCheckedOrDefault)\s*'
+    r'(?:<[^<>()]*>)?\s*(?=\()')
 FUNCTION1_CALL = re.compile(r'Function1\s*<[^<>]*>\s*::\s*New\s*(?=\()')
 WORD_CONST = re.compile(
     r'\bword\s+(?P<id>[A-Za-z_]\w*)\s*(?:\(|=)(?P<init>[^;]*);')
@@ -385,6 +392,13 @@ def extract(paths):
                 if m.group('name') == 'get' and len(split_args(args)) != 3:
                     continue
                 reads.append(Read(lit, path, line, m.group('name')))
+        for m in KEYED_HELPER_CALL.finditer(text):
+            args, _ = call_args(text, m.end())
+            parts = split_args(args)
+            lit = LITERAL_ONLY.match(parts[1]) if len(parts) > 1 else None
+            if lit:
+                reads.append(Read(lit.group(1), path, line_of(m.start()),
+                                  m.group('name')))
         for m in FUNCTION1_CALL.finditer(text):
             args, _ = call_args(text, m.end())
             parts = split_args(args)

@@ -1643,6 +1643,103 @@ void Foam::meshPoisson::removeSplitSelfFields
 }
 
 
+void Foam::meshPoisson::checkCoeffs() const
+{
+    if (!(epsilonR_ > 0) || !std::isfinite(epsilonR_))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry epsilonR (relative permittivity of the medium) = "
+            << epsilonR_ << " must be > 0" << exit(FatalIOError);
+    }
+    if (correction_ == correctionType::shaped && coeffs_.found("interpolation"))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry interpolation in " << coeffs_.name().c_str()
+            << " applies to correction cellCentroid only: the shaped"
+            << " correction averages the mesh field over each charge's own"
+            << " shape with its deposition weights (momentum conserving);"
+            << " remove the entry" << exit(FatalIOError);
+    }
+    if (latticeMaxSources_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry latticeCorrectionSources = " << latticeMaxSources_
+            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
+            << " sources within 2 radii of a charge for which the pair"
+            << " correction, lattice or patch, is made; 0: none)"
+            << exit(FatalIOError);
+    }
+    if (patchPairMaxCharges_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry patchPairCorrectionCharges = " << patchPairMaxCharges_
+            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
+            << " charges that get the patch pair correction, one patch solve"
+            << " each; 0: none)" << exit(FatalIOError);
+    }
+    if (solveInterval_ < 1)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Entry solveInterval = " << solveInterval_ << " must be >= 1 "
+            << "(solve the potential every n-th force evaluation)"
+            << exit(FatalIOError);
+    }
+    const fvSolution& fvSol = mesh_;
+    if (!fvSol.subDict("solvers").found(Phi_.name()))
+    {
+        FatalIOErrorInFunction(fvSol)
+            << "system/fvSolution has no solver entry for " << Phi_.name()
+            << " (the electric potential of the mesh far field), e.g."
+            << nl << "    Phi { solver PCG; preconditioner DIC; "
+            << "tolerance 1e-10; relTol 0; }" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::meshPoisson::printSetup() const
+{
+    Info<< "    Mesh far field: div(eps grad Phi) = -rho_q, epsilonR = "
+        << epsilonR_ << ", correction " << correctionTypeNames[correction_]
+        << (correction_ == correctionType::shaped ? " (S2 radius " : " (rCut ")
+        << radius_ << " m";
+    if (correction_ == correctionType::shaped)
+    {
+        Info<< ", images in " << nWallFaces_ << " wall faces";
+        if (selfFieldRadius_ > 0)
+        {
+            Info<< ", self field removed at the "
+                << selfFieldSamplingTypeNames[selfFieldSampling_]
+                << " (patch radius " << selfFieldPatchRadius() << " m)";
+        }
+        if (lattice_.valid())
+        {
+            Info<< ", lattice correction (cubic cells of " << latticeH_
+                << " m) of charges with at most " << latticeMaxSources_
+                << " sources within 2R";
+        }
+    }
+    Info<< "), "
+        << (
+               correction_ == correctionType::shaped
+             ? word("field averaged over the shapes")
+             : "interpolation " + interpolationScheme_
+           )
+        << ", solved every " << solveInterval_ << " evaluation(s)"
+        << ", " << nNonOrthCorr_ << " non-orthogonal corrector(s) (largest"
+        << " non-orthogonality " << radToDeg(maxNonOrthogonality_)
+        << " deg)";
+    if (periodicShifts_.size())
+    {
+        Info<< ", periodic translations " << periodicShifts_;
+    }
+    if (Phi_.needReference())
+    {
+        Info<< ", neutralising background (no fixed potential)";
+    }
+    Info<< endl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
@@ -1740,54 +1837,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     binSize_(1),
     nBins_(1, 1, 1)
 {
-    if (!(epsilonR_ > 0) || !std::isfinite(epsilonR_))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry epsilonR (relative permittivity of the medium) = "
-            << epsilonR_ << " must be > 0" << exit(FatalIOError);
-    }
-    if (correction_ == correctionType::shaped && coeffs_.found("interpolation"))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry interpolation in " << coeffs_.name().c_str()
-            << " applies to correction cellCentroid only: the shaped"
-            << " correction averages the mesh field over each charge's own"
-            << " shape with its deposition weights (momentum conserving);"
-            << " remove the entry" << exit(FatalIOError);
-    }
-    if (latticeMaxSources_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry latticeCorrectionSources = " << latticeMaxSources_
-            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
-            << " sources within 2 radii of a charge for which the pair"
-            << " correction, lattice or patch, is made; 0: none)"
-            << exit(FatalIOError);
-    }
-    if (patchPairMaxCharges_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry patchPairCorrectionCharges = " << patchPairMaxCharges_
-            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
-            << " charges that get the patch pair correction, one patch solve"
-            << " each; 0: none)" << exit(FatalIOError);
-    }
-    if (solveInterval_ < 1)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry solveInterval = " << solveInterval_ << " must be >= 1 "
-            << "(solve the potential every n-th force evaluation)"
-            << exit(FatalIOError);
-    }
-    const fvSolution& fvSol = mesh;
-    if (!fvSol.subDict("solvers").found(Phi_.name()))
-    {
-        FatalIOErrorInFunction(fvSol)
-            << "system/fvSolution has no solver entry for " << Phi_.name()
-            << " (the electric potential of the mesh far field), e.g."
-            << nl << "    Phi { solver PCG; preconditioner DIC; "
-            << "tolerance 1e-10; relTol 0; }" << exit(FatalIOError);
-    }
+    checkCoeffs();
 
     meshUniform_ = true;
     findPeriodicShifts();
@@ -1801,45 +1851,7 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
         collectWallFaces();
     }
 
-    Info<< "    Mesh far field: div(eps grad Phi) = -rho_q, epsilonR = "
-        << epsilonR_ << ", correction " << correctionTypeNames[correction_]
-        << (correction_ == correctionType::shaped ? " (S2 radius " : " (rCut ")
-        << radius_ << " m";
-    if (correction_ == correctionType::shaped)
-    {
-        Info<< ", images in " << nWallFaces_ << " wall faces";
-        if (selfFieldRadius_ > 0)
-        {
-            Info<< ", self field removed at the "
-                << selfFieldSamplingTypeNames[selfFieldSampling_]
-                << " (patch radius " << selfFieldPatchRadius() << " m)";
-        }
-        if (lattice_.valid())
-        {
-            Info<< ", lattice correction (cubic cells of " << latticeH_
-                << " m) of charges with at most " << latticeMaxSources_
-                << " sources within 2R";
-        }
-    }
-    Info<< "), "
-        << (
-               correction_ == correctionType::shaped
-             ? word("field averaged over the shapes")
-             : "interpolation " + interpolationScheme_
-           )
-        << ", solved every " << solveInterval_ << " evaluation(s)"
-        << ", " << nNonOrthCorr_ << " non-orthogonal corrector(s) (largest"
-        << " non-orthogonality " << radToDeg(maxNonOrthogonality_)
-        << " deg)";
-    if (periodicShifts_.size())
-    {
-        Info<< ", periodic translations " << periodicShifts_;
-    }
-    if (Phi_.needReference())
-    {
-        Info<< ", neutralising background (no fixed potential)";
-    }
-    Info<< endl;
+    printSetup();
 }
 
 

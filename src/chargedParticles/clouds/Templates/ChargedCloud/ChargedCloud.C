@@ -46,8 +46,7 @@ void Foam::ChargedCloud<CloudType>::setModels()
     // Contact charging acts on the contacts the collision model lists
     if (triboCharging().active())
     {
-        contactModelType* ec =
-            dynamic_cast<contactModelType*>(&this->collision());
+        contactModelType* ec = this->contactModel();
         if (!ec)
         {
             FatalIOErrorInFunction(this->subModelProperties())
@@ -63,8 +62,7 @@ void Foam::ChargedCloud<CloudType>::setModels()
     // The pairs in contact for the electrostatics (Ruan Eq. 44)
     if (electrostatics().active() && electrostatics().readsContacts())
     {
-        contactModelType* ec =
-            dynamic_cast<contactModelType*>(&this->collision());
+        contactModelType* ec = this->contactModel();
         if (ec)
         {
             ec->keepCollisionRecords();
@@ -583,8 +581,7 @@ void Foam::ChargedCloud<CloudType>::calculateForces()
     // forces of the new charges
     if (triboCharging().active())
     {
-        const contactModelType& ec =
-            static_cast<const contactModelType&>(this->collision());
+        const contactModelType& ec = *this->contactModel();
         triboCharging().transfer(ec.contacts(), ec.referralNeighbours());
     }
 

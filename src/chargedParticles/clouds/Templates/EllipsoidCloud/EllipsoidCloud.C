@@ -46,10 +46,7 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     // The first half kick, the drift and the rotation in one pass
     // (EllipsoidParcel::move); a contact model gathers its contact
     // bodies as the parcels finish
-    gatherer_ =
-        this->collision().active()
-      ? dynamic_cast<contactModelType*>(&this->collision())
-      : nullptr;
+    gatherer_ = this->collision().active() ? this->contactModel() : nullptr;
     if (gatherer_)
     {
         gatherer_->beginGather();
@@ -399,6 +396,117 @@ void Foam::EllipsoidCloud<CloudType>::checkWrittenFields() const
 }
 
 
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
+{
+    const dictionary& solDict = this->solution().dict();
+    maxInjectionOverlap_ =
+        solDict.template lookupOrDefault<scalar>("maxInjectionOverlap", 0);
+    if (!(maxInjectionOverlap_ >= 0 && maxInjectionOverlap_ <= 0.5))
+    {
+        FatalIOErrorInFunction(solDict)
+            << "Entry maxInjectionOverlap = " << maxInjectionOverlap_
+            << " in " << solDict.name().c_str() << " is out of range: it"
+            << " must be in [0, 0.5] (the largest overlap of a parcel"
+            << " injected into another, as a fraction of the pair's"
+            << " smallest semi-axis; default 0)" << exit(FatalIOError);
+    }
+    const word coupling
+    (
+        solDict.template lookupOrDefault<word>
+        (
+            "momentumCoupling",
+            "sourceTerms"
+        )
+    );
+    if (coupling == "conservativeImplicit")
+    {
+        conservativeCoupling_ = this->solution().coupled();
+    }
+    else if (coupling != "sourceTerms")
+    {
+        FatalIOErrorInFunction(solDict)
+            << "Entry momentumCoupling = " << coupling << " is not one"
+            << " of: conservativeImplicit (drag implicit and momentum"
+            << " conserved on both sides), sourceTerms (OpenFOAM's"
+            << " sourceTerms/schemes/U)" << exit(FatalIOError);
+    }
+    if (conservativeCoupling_)
+    {
+        if (this->solution().steadyState())
+        {
+            FatalIOErrorInFunction(solDict)
+                << "Entry momentumCoupling = conservativeImplicit needs"
+                << " a transient cloud (transient yes)"
+                << exit(FatalIOError);
+        }
+        const scalar relax = this->solution().relaxCoeff("U");
+        if (relax != 1)
+        {
+            FatalIOErrorInFunction(solDict)
+                << "Entry sourceTerms/schemes/U has the relaxation "
+                << relax << "; momentumCoupling conservativeImplicit"
+                << " needs 1 (a relaxed source does not conserve"
+                << " momentum)" << exit(FatalIOError);
+        }
+        Info<< "    Momentum coupling: conservativeImplicit" << endl;
+    }
+
+    // The parcels' moves are split into segments of at most maxCo of a
+    // cell (EllipsoidParcel::move): maxCo <= 0 never ends a move
+    const scalar maxCo = this->solution().maxCo();
+    if (!(maxCo >= inputLimits::maxCoMin && maxCo <= 1))
+    {
+        FatalIOErrorInFunction(solDict)
+            << "Entry maxCo (tracking Courant number) = " << maxCo
+            << " in " << solDict.name().c_str()
+            << " is out of range [" << inputLimits::maxCoMin << ", 1]"
+            << " (fraction of a cell a parcel moves per tracking segment)"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::setLogAndTracking()
+{
+    if (logInterval_ < 1)
+    {
+        FatalIOErrorInFunction(this->solution().dict())
+            << "Entry logInterval = " << logInterval_
+            << " is out of range: >= 1 (time steps)" << exit(FatalIOError);
+    }
+    if (!(trackingTolerance_ >= 0 && trackingTolerance_ <= 0.5))
+    {
+        FatalIOErrorInFunction(this->solution().dict())
+            << "Entry trackingTolerance = " << trackingTolerance_
+            << " is out of range [0, 0.5] (fraction of a cell; 0: track"
+            << " every step)" << exit(FatalIOError);
+    }
+    if (this->mesh().nSolutionD() != 3 && trackingTolerance_ > 0)
+    {
+        // The deviation from the mesh centre of 1-D/2-D cases is applied
+        // by the tracking
+        trackingTolerance_ = 0;
+    }
+    if
+    (
+        trackingTolerance_ > 0
+     && this->solution().active()
+     && this->collision().active()
+     && !this->contactModel()
+    )
+    {
+        // Contact models read the centres (gatherBody); other collision
+        // models (OpenFOAM's pairCollision) read the tracked positions
+        Info<< "    Lazy tracking off: collision model "
+            << this->collision().type() << " reads the tracked positions"
+            << endl;
+        trackingTolerance_ = 0;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -439,110 +547,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 {
     if (this->solution().active())
     {
-        const dictionary& solDict = this->solution().dict();
-        maxInjectionOverlap_ =
-            solDict.template lookupOrDefault<scalar>("maxInjectionOverlap", 0);
-        if (!(maxInjectionOverlap_ >= 0 && maxInjectionOverlap_ <= 0.5))
-        {
-            FatalIOErrorInFunction(solDict)
-                << "Entry maxInjectionOverlap = " << maxInjectionOverlap_
-                << " in " << solDict.name().c_str() << " is out of range: it"
-                << " must be in [0, 0.5] (the largest overlap of a parcel"
-                << " injected into another, as a fraction of the pair's"
-                << " smallest semi-axis; default 0)" << exit(FatalIOError);
-        }
-        const word coupling
-        (
-            solDict.template lookupOrDefault<word>
-            (
-                "momentumCoupling",
-                "sourceTerms"
-            )
-        );
-        if (coupling == "conservativeImplicit")
-        {
-            conservativeCoupling_ = this->solution().coupled();
-        }
-        else if (coupling != "sourceTerms")
-        {
-            FatalIOErrorInFunction(solDict)
-                << "Entry momentumCoupling = " << coupling << " is not one"
-                << " of: conservativeImplicit (drag implicit and momentum"
-                << " conserved on both sides), sourceTerms (OpenFOAM's"
-                << " sourceTerms/schemes/U)" << exit(FatalIOError);
-        }
-        if (conservativeCoupling_)
-        {
-            if (this->solution().steadyState())
-            {
-                FatalIOErrorInFunction(solDict)
-                    << "Entry momentumCoupling = conservativeImplicit needs"
-                    << " a transient cloud (transient yes)"
-                    << exit(FatalIOError);
-            }
-            const scalar relax = this->solution().relaxCoeff("U");
-            if (relax != 1)
-            {
-                FatalIOErrorInFunction(solDict)
-                    << "Entry sourceTerms/schemes/U has the relaxation "
-                    << relax << "; momentumCoupling conservativeImplicit"
-                    << " needs 1 (a relaxed source does not conserve"
-                    << " momentum)" << exit(FatalIOError);
-            }
-            Info<< "    Momentum coupling: conservativeImplicit" << endl;
-        }
+        readSolutionControls();
     }
-
-    // The parcels' moves are split into segments of at most maxCo of a
-    // cell (EllipsoidParcel::move): maxCo <= 0 never ends a move
-    const scalar maxCo = this->solution().maxCo();
-    if
-    (
-        this->solution().active()
-     && !(maxCo >= inputLimits::maxCoMin && maxCo <= 1)
-    )
-    {
-        FatalIOErrorInFunction(this->solution().dict())
-            << "Entry maxCo (tracking Courant number) = " << maxCo
-            << " in " << this->solution().dict().name().c_str()
-            << " is out of range [" << inputLimits::maxCoMin << ", 1]"
-            << " (fraction of a cell a parcel moves per tracking segment)"
-            << exit(FatalIOError);
-    }
-    if (logInterval_ < 1)
-    {
-        FatalIOErrorInFunction(this->solution().dict())
-            << "Entry logInterval = " << logInterval_
-            << " is out of range: >= 1 (time steps)" << exit(FatalIOError);
-    }
-    if (!(trackingTolerance_ >= 0 && trackingTolerance_ <= 0.5))
-    {
-        FatalIOErrorInFunction(this->solution().dict())
-            << "Entry trackingTolerance = " << trackingTolerance_
-            << " is out of range [0, 0.5] (fraction of a cell; 0: track"
-            << " every step)" << exit(FatalIOError);
-    }
-    if (this->mesh().nSolutionD() != 3 && trackingTolerance_ > 0)
-    {
-        // The deviation from the mesh centre of 1-D/2-D cases is applied
-        // by the tracking
-        trackingTolerance_ = 0;
-    }
-    if
-    (
-        trackingTolerance_ > 0
-     && this->solution().active()
-     && this->collision().active()
-     && !isA<contactModelType>(this->collision())
-    )
-    {
-        // Contact models read the centres (gatherBody); other collision
-        // models (OpenFOAM's pairCollision) read the tracked positions
-        Info<< "    Lazy tracking off: collision model "
-            << this->collision().type() << " reads the tracked positions"
-            << endl;
-        trackingTolerance_ = 0;
-    }
+    setLogAndTracking();
 
     if (this->solution().active() && readFields)
     {
@@ -880,8 +887,7 @@ void Foam::EllipsoidCloud<CloudType>::info()
     // Contacts: counted by a contact model (it writes the collision
     // records only when they are read); other models keep the records of
     // the current contacts only
-    const auto* ecPtr =
-        dynamic_cast<const contactModelType*>(&this->collision());
+    const contactModelType* ecPtr = this->contactModel();
 
     scalar nPair = 0, nWall = 0;
     const scalar nParcels = returnReduce(scalar(this->size()), sumOp<scalar>());

@@ -7,7 +7,8 @@
 #include "volFields.H"
 #include "PstreamBuffers.H"
 #include "mapDistribute.H"
-#include "cutoffPairs.H"
+#include "checkedEntry.H"
+#include "Enum.H"
 #include "hertzOnset.H"
 #include "rigidBodyRotation.H"
 
@@ -61,76 +62,6 @@ auto mutableWallRecords(Records& records)
 } // End anonymous namespace
 
 
-// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::restitution
-(
-    const scalar beta
-)
-{
-    // x'' = -max(0, x^3/2 + gamma x^1/4 x'), x(0) = 0, x'(0) = 1; the
-    // force never pulls, so once it vanishes while separating the parcel
-    // flies off freely and e = -x' (see Description)
-    const scalar gamma = Foam::sqrt(5.0)*mag(beta);
-
-    auto accel = [gamma](const scalar x, const scalar v)
-    {
-        const scalar xp = max(x, scalar(0));
-        return -max(xp*Foam::sqrt(xp) + gamma*Foam::sqrt(Foam::sqrt(xp))*v, 0.0);
-    };
-
-    // RK4; the contact lasts ~3.2 time units
-    const scalar h = 2e-4;
-    scalar x = 0, v = 1;
-    for (label i = 0; i < 1000000; ++i)
-    {
-        const scalar k1x = v, k1v = accel(x, v);
-        const scalar k2x = v + 0.5*h*k1v, k2v = accel(x + 0.5*h*k1x, v + 0.5*h*k1v);
-        const scalar k3x = v + 0.5*h*k2v, k3v = accel(x + 0.5*h*k2x, v + 0.5*h*k2v);
-        const scalar k4x = v + h*k3v, k4v = accel(x + h*k3x, v + h*k3v);
-        x += h/6*(k1x + 2*k2x + 2*k3x + k4x);
-        v += h/6*(k1v + 2*k2v + 2*k3v + k4v);
-
-        if (x <= 0 || (v < 0 && accel(x, v) == 0))
-        {
-            return max(-v, scalar(0));
-        }
-    }
-    return 0;
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::dampingRatio(const scalar e)
-{
-    if (e >= 1)
-    {
-        return 0;
-    }
-
-    // restitution(beta) falls monotonically with |beta|: bracket, bisect
-    scalar lo = 0, hi = 1;
-    while (restitution(-hi) > e && hi < 1e3)
-    {
-        hi *= 2;
-    }
-    for (label iter = 0; iter < 60; ++iter)
-    {
-        const scalar mid = 0.5*(lo + hi);
-        if (restitution(-mid) > e)
-        {
-            lo = mid;
-        }
-        else
-        {
-            hi = mid;
-        }
-    }
-    return -0.5*(lo + hi);
-}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -141,78 +72,12 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::readPositive
     const scalar maxValue
 )
 {
-    const scalar value = d.get<scalar>(key);
-    if (!(value > 0) || !(value <= maxValue))
-    {
-        FatalIOErrorInFunction(d)
-            << "Entry " << key << " = " << value << " in "
-            << d.name().c_str() << " is out of range: it must be finite and"
-            << " > 0, at most " << maxValue << exit(FatalIOError);
-    }
-    return value;
-}
-
-
-template<class CloudType>
-typename Foam::EllipsoidCollision<CloudType>::contactLaw
-Foam::EllipsoidCollision<CloudType>::makeLaw
-(
-    const scalar E1, const scalar nu1,
-    const scalar E2, const scalar nu2,
-    const scalar e, const scalar mu, const scalar muR,
-    const dictionary& dict
-)
-{
-    if (!(muR >= 0) || !(muR <= inputLimits::large))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry rollingFriction = " << muR << " in "
-            << dict.name().c_str() << " is out of range: it must be >= 0,"
-            << " at most " << inputLimits::large << exit(FatalIOError);
-    }
-    // Below 1e-6 the damping ratio is beyond the bracket of dampingRatio
-    // (|beta| = 1000; e = 1e-6 is |beta| = 500), whose bisection then
-    // integrates endless creeping contacts
-    if (!(e >= 1e-6 && e <= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry e (restitution coefficient) = " << e << " in "
-            << dict.name().c_str() << " is out of range [1e-06, 1]"
-            << " (1e-06: a perfectly plastic contact)"
-            << exit(FatalIOError);
-    }
-    if (!(mu >= 0) || !(mu <= inputLimits::large))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry mu (friction coefficient) = " << mu << " in "
-            << dict.name().c_str() << " is out of range: it must be >= 0,"
-            << " at most " << inputLimits::large << exit(FatalIOError);
-    }
-    for (const scalar nu : {nu1, nu2})
-    {
-        if (!(nu > -1 && nu <= 0.5))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry poissonsRatio = " << nu
-                << " is out of range (-1, 0.5]" << exit(FatalIOError);
-        }
-    }
-
-    contactLaw law;
-
-    // Ruan Eq. (38)
-    law.Estar = 1/((1 - sqr(nu1))/E1 + (1 - sqr(nu2))/E2);
-
-    // Rasera Eq. (12) with G = E/(2(1 + nu))
-    const scalar G1 = E1/(2*(1 + nu1));
-    const scalar G2 = E2/(2*(1 + nu2));
-    law.Gstar = 1/((2 - nu1)/G1 + (2 - nu2)/G2);
-
-    law.beta = dampingRatio(e);
-    law.mu = mu;
-    law.e = e;
-    law.muR = muR;
-    return law;
+    return getChecked<scalar>
+    (
+        d, key,
+        [maxValue](const scalar x) { return x > 0 && x <= maxValue; },
+        ": it must be finite and > 0, at most " + Foam::name(maxValue)
+    );
 }
 
 
@@ -222,6 +87,15 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     const particleMaterials& materials =
         this->owner().constProps().materials();
     const label n = nMaterials_;
+    auto poissonsRatio = [](const dictionary& d)
+    {
+        return getChecked<scalar>
+        (
+            d, "poissonsRatio",
+            [](const scalar nu) { return nu > -1 && nu <= 0.5; },
+            " (-1, 0.5]"
+        );
+    };
 
     // Reduced stiffness: all contact moduli scaled by chi
     particleE_.setSize(n);
@@ -229,29 +103,24 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     for (label m = 0; m < n; ++m)
     {
         particleE_[m] = chi_*readPositive(materials.dict(m), "youngsModulus");
-        particleNu_[m] = materials.dict(m).get<scalar>("poissonsRatio");
+        particleNu_[m] = poissonsRatio(materials.dict(m));
     }
 
     // Every pair: e, mu and rollingFriction of its materialPairs entry,
     // else of the coefficients
     const scalar e = coeffs.get<scalar>("e");
     const scalar mu = coeffs.get<scalar>("mu");
-    const scalar muR =
-        coeffs.template lookupOrDefault<scalar>("rollingFriction", 0);
+    const scalar muR = coeffs.getOrDefault<scalar>("rollingFriction", 0);
     pp_.setSize(n*n);
     materials.forPairs
     (
         coeffs,
         [&](const label a, const label b, const dictionary* entry, bool)
         {
-            const dictionary& d = entry ? *entry : coeffs;
-            pp_[materials.pairIndex(a, b)] = makeLaw
+            pp_[materials.pairIndex(a, b)] = pairContact_.properties
             (
                 particleE_[a], particleNu_[a], particleE_[b], particleNu_[b],
-                d.template lookupOrDefault<scalar>("e", e),
-                d.template lookupOrDefault<scalar>("mu", mu),
-                d.template lookupOrDefault<scalar>("rollingFriction", muR),
-                d
+                entry ? *entry : coeffs, e, mu, muR
             );
         }
     );
@@ -259,23 +128,18 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     // The walls: walls/<material> overrides e, mu and rollingFriction
     const dictionary& walls = coeffs.subDict("walls");
     const scalar Ew = chi_*readPositive(walls, "youngsModulus");
-    const scalar nuw = walls.get<scalar>("poissonsRatio");
+    const scalar nuw = poissonsRatio(walls);
     const scalar ew = walls.get<scalar>("e");
     const scalar muw = walls.get<scalar>("mu");
-    const scalar muRw =
-        walls.template lookupOrDefault<scalar>("rollingFriction", 0);
+    const scalar muRw = walls.getOrDefault<scalar>("rollingFriction", 0);
     pw_.setSize(n);
     for (label m = 0; m < n; ++m)
     {
         const dictionary* own = walls.findDict(materials.name(m));
-        const dictionary& d = own ? *own : walls;
-        pw_[m] = makeLaw
+        pw_[m] = wallContact_.properties
         (
-            particleE_[m], particleNu_[m], Ew, nuw,
-            d.template lookupOrDefault<scalar>("e", ew),
-            d.template lookupOrDefault<scalar>("mu", muw),
-            d.template lookupOrDefault<scalar>("rollingFriction", muRw),
-            d
+            particleE_[m], particleNu_[m], Ew, nuw, own ? *own : walls,
+            ew, muw, muRw
         );
     }
 }
@@ -358,207 +222,6 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 
 
 template<class CloudType>
-Foam::vector Foam::EllipsoidCollision<CloudType>::contactForce
-(
-    const ellipsoidContact::result& c,
-    const vector& vRel,
-    const scalar mStar,
-    const scalar invMassNormal,
-    const contactLaw& law,
-    vector& xi,
-    hertzPowers& powers,
-    const scalar energyWeight
-)
-{
-    const scalar dt = deltaT_;
-
-    const vector& n = c.n;
-    const scalar delta = c.overlap;
-    const scalar R = c.reducedRadius;
-    const scalar vn = vRel & n;             // > 0: approaching
-    const vector vt = vRel - vn*n;
-
-    // Normal: Hertz (Ruan Eq. 36) + dashpot (Rasera Eq. 9), no tension
-    const scalar sqrtR = Foam::sqrt(R);
-    const scalar sqrtRdelta = sqrtR*Foam::sqrt(delta);
-    const scalar Sn = 2*law.Estar*sqrtRdelta;                // dF/d delta
-    const scalar etaN =
-        2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(Sn*mStar);
-    const scalar kHertz = (4.0/3.0)*law.Estar*sqrtR;
-    const scalar delta32 = delta*Foam::sqrt(delta);
-    powers = {delta32, delta*delta32};
-
-    // The kicks' impulse missed where the contact begins between steps
-    // (the last drift, at vn, started from no overlap) or ends (the next
-    // drift, at the speed this kick leaves, ends in none): see Description
-    auto correct = [&](const scalar w)
-    {
-        const hertzOnset::correction dc = hertzOnset::onsetCorrection(delta, w);
-        powers.delta32 -= dc.delta32;
-        powers.delta52 -= dc.delta52;
-    };
-    if (delta <= vn*dt)
-    {
-        correct(vn*dt);
-    }
-    const scalar vnNext =
-        vn - dt*max(kHertz*powers.delta32 + etaN*vn, scalar(0))*invMassNormal;
-    if (delta + vnNext*dt <= 0)
-    {
-        correct(-vnNext*dt);
-    }
-    const scalar Fe = kHertz*powers.delta32;
-    const scalar Fn = max(Fe + etaN*vn, scalar(0));
-
-    vector F = -Fn*n;
-
-    // Bookkeeping: the elastic energy changes by Fe vn dt, the contact
-    // force does -Fn vn dt of work: the difference (Fn - Fe) vn dt >= 0
-    // is dissipated (dashpot, or the released energy under the no-tension
-    // cut). On the first and last step of a contact Fe carries the onset
-    // correction, so there the books hold to that correction's impulse
-    scalar dissipated = (Fn - Fe)*vn*dt;
-    scalar elastic = 0.4*kHertz*delta*delta32;
-
-    if (tangential_ == tangentialModel::coulomb)
-    {
-        // Ruan Eq. (39): sliding friction against the slip velocity
-        const scalar vtMag = mag(vt);
-        if (vtMag > VSMALL)
-        {
-            F -= law.mu*Fn*vt/vtMag;
-        }
-        dissipated += law.mu*Fn*vtMag*dt;
-    }
-    else
-    {
-        // Mindlin spring with history (Rasera Eqs. 7, 8, 11, 12): keep xi
-        // in the current tangent plane with its length, then stretch it
-        // (squared lengths: one square root per contact, none for the
-        // friction test of a sticking contact)
-        const scalar xiMag2 = magSqr(xi);
-        if (xiMag2 > 0)
-        {
-            xi -= (xi & n)*n;
-            const scalar xiProjMag2 = magSqr(xi);
-            if (xiProjMag2 > 0)
-            {
-                xi *= Foam::sqrt(xiMag2/xiProjMag2);
-            }
-        }
-
-        const scalar kT = 8*law.Gstar*sqrtRdelta;
-        const vector xi0 = xi;
-        const scalar springBefore = 0.5*kT*magSqr(xi0);
-        xi += vt*dt;
-        const scalar etaT =
-            2*Foam::sqrt(5.0/6.0)*mag(law.beta)*Foam::sqrt(kT*mStar);
-        vector Ft = -kT*xi - etaT*vt;
-        const scalar FtMag2 = magSqr(Ft);
-        const scalar FtMax = law.mu*Fn;
-        if (FtMag2 > sqr(FtMax))
-        {
-            // Slip: the friction limit carries the spring and the dashpot
-            // in parallel, both in series with the slider, so the dashpot
-            // acts at the spring's rate: Ft = -kT xi - etaT (xi - xi0)/dt.
-            // The slip (trial minus new spring length) is then
-            // (Ft - Ft_trial)/(kT + etaT/dt), opposite to Ft, and the
-            // slider, the dashpot and the spring's discrete update each
-            // dissipate >= 0. (Setting -kT xi = Ft instead puts the
-            // dashpot's share into the spring: energy from nothing.)
-            // Undamped (etaT = 0) this is xi = -Ft/kT
-            Ft *= FtMax/Foam::sqrt(FtMag2);
-            const scalar kRate = kT + etaT/dt;
-            xi = kRate > VSMALL ? (etaT/dt*xi0 - Ft)/kRate : vector(Zero);
-        }
-        F += Ft;
-
-        // Bookkeeping: the work taken from the relative motion, -Ft.vt dt,
-        // goes into the spring or is dissipated (dashpot, slip): >= 0 by
-        // the slip rule above
-        const scalar springAfter = 0.5*kT*magSqr(xi);
-        dissipated += -(Ft & vt)*dt - (springAfter - springBefore);
-        elastic += springAfter;
-    }
-
-    dissipatedEnergy_ += energyWeight*dissipated;
-    elasticEnergy_ += energyWeight*elastic;
-
-    return F;
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::hertzRadiusDerivative
-(
-    const ellipsoidContact::result& c,
-    const contactLaw& law,
-    const hertzPowers& powers
-)
-{
-    const scalar R = c.reducedRadius;
-    return R > 0 ? (4.0/15.0)*law.Estar*powers.delta52/Foam::sqrt(R) : 0;
-}
-
-
-template<class CloudType>
-Foam::vector Foam::EllipsoidCollision<CloudType>::rollingTorque
-(
-    const ellipsoidContact::result& c,
-    const vector& F,
-    const vector& w,
-    const scalar Ieff,
-    const contactLaw& law,
-    const scalar energyWeight
-)
-{
-    const scalar wMag = mag(w);
-    if (law.muR <= 0 || wMag < VSMALL)
-    {
-        return Zero;
-    }
-
-    // Ai et al. (2011) model A, limited so that w is not reversed: a
-    // half kick dt/2 M/I must not exceed |w| (both kicks of a step)
-    const scalar dt = deltaT_;
-    const scalar Fn = mag(F & c.n);
-    const scalar Mmag = min(law.muR*c.reducedRadius*Fn, Ieff*wMag/dt);
-
-    dissipatedEnergy_ += energyWeight*Mmag*wMag*dt;
-
-    return -Mmag*w/wMag;
-}
-
-
-template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::normalMobility
-(
-    const contactBody& b,
-    const point& xb,
-    const point& xc,
-    const vector& n
-) const
-{
-    // 1/m + (r x n).I^-1 (r x n); r x n = 0 for a sphere (r along n)
-    if (b.sphere)
-    {
-        return 1/b.mass;
-    }
-    const vector rn = (xc - xb) ^ n;
-    if (b.shell >= 0)
-    {
-        return 1/b.mass + (rn & (inverseInertia_[b.shell] & rn));
-    }
-    const parcelType& p = *b.p;
-    const vector I = p.principalMoments();
-    const vector rnBody = rigidBodyRotation::toBody(p.orientation(), rn);
-    return
-        1/b.mass
-      + sqr(rnBody.x())/I.x() + sqr(rnBody.y())/I.y() + sqr(rnBody.z())/I.z();
-}
-
-
-template<class CloudType>
 typename Foam::EllipsoidCollision<CloudType>::contactBody
 Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
 {
@@ -594,23 +257,16 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
     // the move (EllipsoidCloud::moveCollide; parcels finish their move in
     // cloud order, also in parallel where those received from other
     // processors are appended and finish last) or here
-    if (!gathering_ || parcels_.size() != this->owner().size())
+    if (!gathering_ || bodies_.size() != this->owner().size())
     {
-        parcels_.clear();
-        x_.clear();
         bodies_.clear();
-        shells_.clear();
-        inverseInertia_.clear();
         for (parcelType& p : this->owner())
         {
             gatherBody(p);
         }
     }
     gathering_ = false;
-    force_.setSize(parcels_.size());
-    torque_.setSize(parcels_.size());
-    force_ = vector::zero;
-    torque_ = vector::zero;
+    bodies_.zeroForces();
 
     // The positions of the parcels of cells with referred neighbours
     // (other processors, cyclics)
@@ -634,7 +290,14 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
         }
     }
 
-    if (!neighbourListValid())
+    if
+    (
+        !list_.valid
+        (
+            bodies_.positions(),
+            [this](const label i) -> const labelPair& { return bodies_[i].id; }
+        )
+    )
     {
         buildNeighbourList();
     }
@@ -644,71 +307,8 @@ void Foam::EllipsoidCollision<CloudType>::preInteraction()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::beginGather()
 {
-    parcels_.clear();
-    x_.clear();
     bodies_.clear();
-    shells_.clear();
-    inverseInertia_.clear();
     gathering_ = true;
-}
-
-
-template<class CloudType>
-bool Foam::EllipsoidCollision<CloudType>::neighbourListValid() const
-{
-    if (listIds_.size() != parcels_.size())
-    {
-        return false;
-    }
-    const scalar maxMove2 = sqr(0.5*skin_);
-    forAll(parcels_, i)
-    {
-        if
-        (
-            listIds_[i] != bodies_[i].id
-         || magSqr(x_[i] - listX_[i]) > maxMove2
-        )
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-
-template<class CloudType>
-Foam::labelList
-Foam::EllipsoidCollision<CloudType>::previousListIndices() const
-{
-    const label n = parcels_.size();
-    // Index of every parcel in the previous list (-1: new to the list),
-    // for the contact histories
-    labelList oldIndex(n, -1);
-    {
-        HashTable<label, labelPair, Hash<labelPair>> oldOf;
-        forAll(parcels_, i)
-        {
-            const labelPair& id = bodies_[i].id;
-            if (i < listIds_.size() && listIds_[i] == id)
-            {
-                oldIndex[i] = i;
-                continue;
-            }
-            if (oldOf.empty())
-            {
-                forAll(listIds_, k)
-                {
-                    oldOf.insert(listIds_[k], k);
-                }
-            }
-            const auto iter = oldOf.cfind(id);
-            if (iter.found())
-            {
-                oldIndex[i] = iter.val();
-            }
-        }
-    }
-    return oldIndex;
 }
 
 
@@ -758,22 +358,24 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
 {
     // Wall faces in reach: those of the interaction list of the parcel's
     // cell whose bounding box comes within r + skin. Complete while the
-    // parcel stays within skin/2 of x_ (the list is rebuilt otherwise):
+    // parcel stays within skin/2 of its position (the list is rebuilt
+    // otherwise):
     // the list of a cell holds the faces whose boxes come within
     // maxInteractionDistance of the cell's box (InteractionLists), and
     // r + skin/2 <= maxInteractionDistance
     const polyMesh& mesh = this->owner().mesh();
-    const label n = parcels_.size();
+    const label n = bodies_.size();
+    const scalar skin = list_.skin();
     const labelListList& directWallFaces = il_.dwfil();
     wallStart_.setSize(n + 1);
     wallStart_[0] = 0;
     wallFaces_.clear();
     wallParcels_.clear();
-    forAll(parcels_, i)
+    for (label i = 0; i < n; ++i)
     {
-        parcelType& p = *parcels_[i];
+        parcelType& p = bodies_.parcel(i);
         const scalar r = bodies_[i].radius;
-        if (r + 0.5*skin_ > maxDistance_)
+        if (r + 0.5*skin > maxDistance_)
         {
             FatalIOErrorInFunction(this->coeffDict())
                 << "Entry maxInteractionDistance = "
@@ -782,13 +384,13 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
                 << ", origId " << p.origId() << ") with the bounding radius "
                 << Foam::name(r) << " m of its collision shell: it must be"
                 << " >= the radius + neighbourSkin/2 = "
-                << Foam::name(r + 0.5*skin_) << exit(FatalIOError);
+                << Foam::name(r + 0.5*skin) << exit(FatalIOError);
         }
-        const point& x = x_[i];
+        const point& x = bodies_.x(i);
         for (const label facei : directWallFaces[p.cell()])
         {
             const boundBox& bb = wallFaceBb_[facei - mesh.nInternalFaces()];
-            if (magSqr(x - bb.nearest(x)) < sqr(r + skin_))
+            if (magSqr(x - bb.nearest(x)) < sqr(r + skin))
             {
                 wallFaces_.append(facei);
             }
@@ -822,95 +424,34 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
 {
-    ++nListBuilds_;
-    const label n = parcels_.size();
+    auto idOf =
+        [this](const label i) -> const labelPair& { return bodies_[i].id; };
 
-    // The previous list's contact histories, carried below
-    const labelList oldIndex(previousListIndices());
-    labelList oldStart;
-    oldStart.transfer(listStart_);
-    labelList oldPartners;
-    oldPartners.transfer(listPartners_);
-    List<vector> oldXi;
-    oldXi.transfer(listXi_);
-    List<char> oldTouching;
-    oldTouching.transfer(listTouching_);
-    List<vector> oldN;
-    oldN.transfer(listN_);
+    // The previous list and its histories, carried over below
+    const labelList oldIndex(list_.indices(bodies_.size(), idOf));
+    neighbourList old;
+    old.transfer(list_);
+    pairHistories oldHistories;
+    oldHistories.transfer(histories_);
 
-    listX_ = x_;
-    listIds_.setSize(n);
-    scalar rMax = 0;
-    forAll(parcels_, i)
-    {
-        listIds_[i] = bodies_[i].id;
-        rMax = max(rMax, bodies_[i].radius);
-    }
+    list_.build
+    (
+        bodies_.positions(),
+        idOf,
+        [this](const label i) { return bodies_[i].radius; }
+    );
 
-    // Partners j > i of each i; the cell list visits the targets i in
-    // order, so the rows come out compressed (partners sorted per row
-    // below: evaluation in cloud order)
-    listStart_.setSize(n + 1);
-    listPartners_.clear();
-    label row = 0;
-    listStart_[0] = 0;
-    if (n > 1)
-    {
-        forPairsWithinCutoff
-        (
-            x_, x_, 2*rMax + skin_, 0,
-            [&](const label i, const label j, const vector&, const scalar d2)
-            {
-                if
-                (
-                    j > i
-                 && d2 < sqr(bodies_[i].radius + bodies_[j].radius + skin_)
-                )
-                {
-                    while (row < i)
-                    {
-                        listStart_[++row] = listPartners_.size();
-                    }
-                    listPartners_.append(j);
-                }
-            }
-        );
-    }
-    while (row < n)
-    {
-        listStart_[++row] = listPartners_.size();
-    }
-    for (label i = 0; i < n; ++i)
-    {
-        std::sort
-        (
-            listPartners_.begin() + listStart_[i],
-            listPartners_.begin() + listStart_[i + 1]
-        );
-    }
-
-    carryHistories(oldStart, oldPartners, oldXi, oldTouching, oldN, oldIndex);
-
-    cacheWallFaceBoxes();
-    findWallFaces();
-}
-
-
-template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::carryHistories
-(
-    const labelList& oldStart,
-    const labelList& oldPartners,
-    const List<vector>& oldXi,
-    const List<char>& oldTouching,
-    const List<vector>& oldN,
-    const labelList& oldIndex
-)
-{
-    // The history of pair (A, B) from the records of A, if A has one
-    auto fromRecords =
-        [](const parcelType& pA, const parcelType& pB, vector& xi)
+    // A pair not in the old list: the history of pair (A, B) from the
+    // records of A, if A has one (read on restart, injected or
+    // transferred: its records are current; in parallel and with cyclics
+    // all records are written every step)
+    histories_.carry
+    (
+        list_, old, oldHistories, oldIndex, referring() || keepRecords_,
+        [this](const label a, const label b, vector& xi)
         {
+            const parcelType& pA = bodies_.parcel(a);
+            const parcelType& pB = bodies_.parcel(b);
             for (const auto& record : pA.collisionRecords().pairRecords())
             {
                 if
@@ -924,86 +465,35 @@ void Foam::EllipsoidCollision<CloudType>::carryHistories
                 }
             }
             return false;
-        };
-
-    // In parallel and with cyclics the records are written every step
-    const bool recordsCurrent = referring() || keepRecords_;
-
-    listXi_.setSize(listPartners_.size());
-    listTouching_.setSize(listPartners_.size());
-    listN_.setSize(listPartners_.size());
-    forAll(parcels_, i)
-    {
-        const label oi = oldIndex[i];
-        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
-        {
-            const label j = listPartners_[k];
-            const label oj = oldIndex[j];
-            vector xi(Zero);
-            vector n(Zero);
-            bool touching = false;
-            bool found = false;
-
-            // In the previous list (rows hold the partners of higher index)
-            if (oi >= 0 && oj >= 0)
-            {
-                const label a = min(oi, oj);
-                const label b = max(oi, oj);
-                for (label m = oldStart[a]; m < oldStart[a + 1]; ++m)
-                {
-                    if (oldPartners[m] == b)
-                    {
-                        found = true;
-                        touching = oldTouching[m];
-                        xi = a == oi ? oldXi[m] : -oldXi[m];
-                        n = a == oi ? oldN[m] : -oldN[m];
-                        break;
-                    }
-                }
-            }
-
-            // Otherwise from the records of a parcel new to the list (read
-            // on restart, injected or transferred: its records are
-            // current); a pair of two old parcels missing from the list
-            // was not within the skin, not in contact
-            if (!found && (oi < 0 || recordsCurrent))
-            {
-                touching = fromRecords(*parcels_[i], *parcels_[j], xi);
-            }
-            else if (!found && oj < 0)
-            {
-                touching = fromRecords(*parcels_[j], *parcels_[i], xi);
-                xi = -xi;
-            }
-            listXi_[k] = touching ? xi : vector(Zero);
-            listTouching_[k] = touching;
-            listN_[k] = n;
         }
-    }
+    );
+
+    cacheWallFaceBoxes();
+    findWallFaces();
 }
 
 
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::writePairRecords()
 {
-    forAll(parcels_, i)
+    for (label i = 0; i < bodies_.size(); ++i)
     {
-        parcelType& pA = *parcels_[i];
-        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
+        parcelType& pA = bodies_.parcel(i);
+        for (label k = list_.begin(i); k < list_.end(i); ++k)
         {
-            if (listTouching_[k])
+            if (histories_.touching(k))
             {
-                parcelType& pB = *parcels_[listPartners_[k]];
+                parcelType& pB = bodies_.parcel(list_.partner(k));
                 pA.collisionRecords().matchPairRecord
                 (
                     pB.origProc(),
                     pB.origId()
-                ).collisionData() = listXi_[k];
+                ).collisionData() = histories_.xi(k);
                 pB.collisionRecords().matchPairRecord
                 (
                     pA.origProc(),
                     pA.origId()
-                ).collisionData() = -listXi_[k];
+                ).collisionData() = -histories_.xi(k);
             }
         }
     }
@@ -1047,8 +537,8 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
     }
     else if (b1.shell >= 0 && b2.shell >= 0)
     {
-        const ellipsoid& e1 = shells_[b1.shell];
-        const ellipsoid& e2 = shells_[b2.shell];
+        const ellipsoid& e1 = bodies_.shell(b1);
+        const ellipsoid& e2 = bodies_.shell(b2);
         c =
             method_ == ellipsoidContact::method::automatic
           ? ellipsoidContact::contact(e1, e2, nTrack)
@@ -1112,14 +602,18 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
       - pointVelocity(B.U, B.omega, xB, xc);
     const scalar mStar = A.mass*B.mass/(A.mass + B.mass);
 
-    const contactLaw& law = pp_[A.material*nMaterials_ + B.material];
-    hertzPowers powers;
-    const vector F = contactForce
+    const contactProperties& law = pp_[A.material*nMaterials_ + B.material];
+    scalar dUdR;
+    contactWork work{0, 0};
+    const vector F = pairContact_.force
     (
-        c, vRel, mStar,
-        normalMobility(A, xA, xc, c.n) + normalMobility(B, xB, xc, c.n),
-        law, xi, powers, energyWeight
+        law, c, vRel, mStar,
+        bodies_.normalMobility(A, xA, xc, c.n)
+      + bodies_.normalMobility(B, xB, xc, c.n),
+        deltaT_, xi, dUdR, work
     );
+    dissipatedEnergy_ += energyWeight*work.dissipated;
+    elasticEnergy_ += energyWeight*work.elastic;
 
     const scalar twoDeltaBl = A.deltaBl + B.deltaBl;
     if (twoDeltaBl > 0 && c.overlap > 0.5*twoDeltaBl)
@@ -1132,24 +626,24 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     }
 
     // Rolling friction, limited by the smaller rotational inertia
+    scalar rolled = 0;
     const vector Mr =
         law.muR > 0
-      ? rollingTorque
+      ? pairContact_.rollingTorque
         (
-            c, F, A.omega - B.omega,
+            law, c, F, A.omega - B.omega,
             min
             (
                 cmptMin(A.p->principalMoments()),
                 cmptMin(B.p->principalMoments())
             ),
-            law, energyWeight
+            deltaT_, rolled
         )
       : Zero;
+    dissipatedEnergy_ += energyWeight*rolled;
 
-    // The elastic force of the change of R (see Description)
-    const scalar dUdR = hertzRadiusDerivative(c, law, powers);
-
-    // Torques about the centroids (Ruan Eq. 40)
+    // Torques about the centroids (Ruan Eq. 40), and the elastic force and
+    // torques of the change of R (-dUdR gradR, see Description)
     torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
     torqueB -= ((xc - xB) ^ F) + Mr + dUdR*c.gradR.rotation2;
     return F - dUdR*c.gradR.centre1;
@@ -1159,15 +653,15 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
 {
-    forAll(parcels_, i)
+    for (label i = 0; i < bodies_.size(); ++i)
     {
         const contactBody& A = bodies_[i];
-        const point& xA = x_[i];
-        for (label k = listStart_[i]; k < listStart_[i + 1]; ++k)
+        const point& xA = bodies_.x(i);
+        for (label k = list_.begin(i); k < list_.end(i); ++k)
         {
-            const label j = listPartners_[k];
+            const label j = list_.partner(k);
             const contactBody& B = bodies_[j];
-            const point& xB = x_[j];
+            const point& xB = bodies_.x(j);
 
             // Bounding spheres of the collision shells, then the contact.
             // Apart, the pair's tracked direction is forgotten: it then
@@ -1175,31 +669,33 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             // reach, not on when the list was built
             if (magSqr(xA - xB) > sqr(A.radius + B.radius))
             {
-                listTouching_[k] = false;
-                listN_[k] = Zero;
+                histories_.setTouching(k, false);
+                histories_.direction(k) = Zero;
                 continue;
             }
             const ellipsoidContact::result c =
-                pairGeometry(A, xA, B, xB, false, listN_[k]);
+                pairGeometry(A, xA, B, xB, false, histories_.direction(k));
             if (!c.contact || c.overlap <= 0)
             {
-                listTouching_[k] = false;
+                histories_.setTouching(k, false);
                 continue;
             }
 
             // A new contact starts its tangential history
-            vector& xi = listXi_[k];
-            if (!listTouching_[k])
+            vector& xi = histories_.xi(k);
+            if (!histories_.touching(k))
             {
                 xi = Zero;
-                listTouching_[k] = true;
+                histories_.setTouching(k, true);
             }
             nPairSides_ += 2;
 
-            const vector F =
-                pairForce(c, A, xA, B, xB, xi, -1, torque_[i], torque_[j]);
-            force_[i] += F;
-            force_[j] -= F;
+            const vector F = pairForce
+            (
+                c, A, xA, B, xB, xi, -1, bodies_.torque(i), bodies_.torque(j)
+            );
+            bodies_.force(i) += F;
+            bodies_.force(j) -= F;
         }
     }
 }
@@ -1290,7 +786,7 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
 )
 {
     const contactBody& b = bodies_[i];
-    const point& xp = x_[i];
+    const point& xp = bodies_.x(i);
     const scalar r = b.radius;
 
     // The face's plane or its bounding box out of reach of the shell's
@@ -1312,7 +808,7 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
       ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
       : ellipsoidContact::ellipsoidPlane
         (
-            shells_[b.shell], fc, -nOutOfDomain
+            bodies_.shell(b), fc, -nOutOfDomain
         );
     if (!c.contact || c.overlap <= 0)
     {
@@ -1356,16 +852,25 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
     vector& xi =
         p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
 
-    const contactLaw& law = pw_[b.material];
-    hertzPowers powers;
-    const vector F = contactForce
+    const contactProperties& law = pw_[b.material];
+    scalar dUdR;
+    contactWork work{0, 0};
+    const vector F = wallContact_.force
     (
-        c, vRel, b.mass, normalMobility(b, xp, xc, c.n), law, xi, powers
+        law, c, vRel, b.mass, bodies_.normalMobility(b, xp, xc, c.n), deltaT_, xi,
+        dUdR, work
     );
+    dissipatedEnergy_ += work.dissipated;
+    elasticEnergy_ += work.elastic;
+    scalar rolled = 0;
     const vector Mr =
         law.muR > 0
-      ? rollingTorque(c, F, b.omega, cmptMin(p.principalMoments()), law)
+      ? wallContact_.rollingTorque
+        (
+            law, c, F, b.omega, cmptMin(p.principalMoments()), deltaT_, rolled
+        )
       : Zero;
+    dissipatedEnergy_ += rolled;
     if (b.deltaBl > 0 && c.overlap > 0.5*b.deltaBl)
     {
         checkBufferLayer
@@ -1375,9 +880,8 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
         );
     }
     // The elastic torque of the change of R (see Description)
-    const scalar dUdR = hertzRadiusDerivative(c, law, powers);
-    force_[i] += F;
-    torque_[i] += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
+    bodies_.force(i) += F;
+    bodies_.torque(i) += ((xc - xp) ^ F) + Mr - dUdR*c.gradR.rotation1;
 }
 
 
@@ -1395,7 +899,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
     // referred wall faces: the faces across processors and cyclics are
     // found per step from the interaction lists)
     const bool allParcels = referring();
-    const label nLoop = allParcels ? parcels_.size() : wallParcels_.size();
+    const label nLoop = allParcels ? bodies_.size() : wallParcels_.size();
     for (label m = 0; m < nLoop; ++m)
     {
         const label i = allParcels ? m : wallParcels_[m];
@@ -1425,7 +929,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
         if (allParcels)
         {
-            for (const label rwfi : referredWallFaces[parcels_[i]->cell()])
+            for (const label rwfi : referredWallFaces[bodies_.parcel(i).cell()])
             {
                 const referredWallFace& rwf = il_.referredWallFaces()[rwfi];
                 const pointField& pts = rwf.points();
@@ -1444,18 +948,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 );
             }
         }
-    }
-}
-
-
-template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::scatterForces()
-{
-    forAll(parcels_, i)
-    {
-        parcelType& p = *parcels_[i];
-        p.f() = force_[i];
-        p.torque() = torque_[i];
     }
 }
 
@@ -1486,12 +978,12 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         // The narrow phase's tracked directions are not written: the run
         // forgets them as a restart from this time does, so both continue
         // identically (the next narrow phase starts from the centre line)
-        listN_ = Zero;
+        histories_.forgetDirections();
     }
     if (referring() || keepRecords_ || writeTime)
     {
         writePairRecords();
-        for (parcelType* p : parcels_)
+        for (parcelType* p : bodies_.parcels())
         {
             compact(*p, true);
         }
@@ -1501,7 +993,7 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         // Wall records: only parcels with walls in reach have any
         for (const label i : wallParcels_)
         {
-            compact(*parcels_[i], false);
+            compact(bodies_.parcel(i), false);
         }
     }
 
@@ -1537,6 +1029,99 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
 }
 
 
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::checkCoeffs() const
+{
+    const dictionary& coeffs = this->coeffDict();
+
+    if
+    (
+        coeffs.found("deltaBl")
+     && !(deltaBl_ >= 0 && deltaBl_ <= maxDistance_)
+    )
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry deltaBl = " << deltaBl_ << " is out of range: >= 0,"
+            << " at most maxInteractionDistance = " << maxDistance_
+            << exit(FatalIOError);
+    }
+
+    // The neighbour search bins the mesh's bounding box by this distance:
+    // a longer one finds the same pairs
+    const scalar diagonal = mag(this->owner().mesh().bounds().span());
+    if (!(maxDistance_ <= diagonal))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry maxInteractionDistance = " << maxDistance_
+            << " is out of range (0, " << diagonal << "] (the diagonal of the"
+            << " mesh's bounding box)" << exit(FatalIOError);
+    }
+    if (!(deltaBlRatio_ >= 0 && deltaBlRatio_ < 1))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry deltaBlRatio = " << deltaBlRatio_
+            << " is out of range [0, 1)" << exit(FatalIOError);
+    }
+
+    // The wall faces in reach are taken from the interaction list of the
+    // parcel's cell at the list build: complete while the parcel stays
+    // within skin/2 of its position then (see buildNeighbourList)
+    if (!(list_.skin() > 0) || !(list_.skin() <= maxDistance_))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry neighbourSkin = " << Foam::name(list_.skin())
+            << " is out of range (0, maxInteractionDistance = "
+            << Foam::name(maxDistance_) << "]" << exit(FatalIOError);
+    }
+
+    if (resolutionSteps_ < 1)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry collisionResolutionSteps = " << resolutionSteps_
+            << " is out of range: >= 1" << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::printLaws() const
+{
+    Info<< "    Ellipsoid Hertz contact: stiffness ratio chi = " << chi_
+        << ", buffer layer "
+        << (deltaBl_ >= 0
+            ? Foam::name(deltaBl_) + " m"
+            : Foam::name(deltaBlRatio_) + " x smallest semi-axis").c_str()
+        << ", " << pairContact_.description().c_str() << endl;
+    if (wallContact_.description() != pairContact_.description())
+    {
+        Info<< "    walls: " << wallContact_.description().c_str() << endl;
+    }
+    const particleMaterials& materials = this->owner().constProps().materials();
+    for (label a = 0; a < nMaterials_; ++a)
+    {
+        const std::string what
+        (
+            nMaterials_ > 1 ? "    " + materials.name(a) + ": " : "    "
+        );
+        for (label b = a; b < nMaterials_; ++b)
+        {
+            const contactProperties& l = pairProperties(a, b);
+            const std::string with
+            (
+                nMaterials_ > 1 ? "with " + materials.name(b) + " " : ""
+            );
+            Info<< what.c_str() << with.c_str() << "E* = " << l.Estar
+                << ", G* = " << l.Gstar << ", e = " << l.e
+                << " (dashpot beta = " << l.beta << "), mu = " << l.mu
+                << endl;
+        }
+        const contactProperties& l = wallProperties(a);
+        Info<< what.c_str() << "walls: E* = " << l.Estar << ", e = " << l.e
+            << " (beta = " << l.beta << "), mu = " << l.mu << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -1548,9 +1133,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
 :
     ContactModel<CloudType>(dict, owner, typeName),
     nMaterials_(owner.constProps().materials().size()),
+    pairContact_(this->coeffDict()),
+    wallContact_(this->coeffDict().subDict("walls"), &pairContact_),
     pp_(),
     pw_(),
-    tangential_(tangentialModel::mindlin),
     deltaBl_(this->coeffDict().template lookupOrDefault<scalar>("deltaBl", -1)),
     deltaBlRatio_
     (
@@ -1590,14 +1176,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         )
     ),
     elasticEnergy_(0),
-    parcels_(),
-    x_(),
     bodies_(),
-    force_(),
-    torque_(),
     gathering_(false),
     deltaT_(owner.mesh().time().deltaTValue()),
-    skin_
+    list_
     (
         this->coeffDict().template lookupOrDefault<scalar>
         (
@@ -1606,11 +1188,6 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         )
     ),
     maxDistance_(readPositive(this->coeffDict(), "maxInteractionDistance")),
-    listIds_(),
-    listX_(),
-    listStart_(),
-    listPartners_(),
-    nListBuilds_(0),
     subCycles_
     (
         owner.outputProperties().template lookupOrDefault<label>
@@ -1628,9 +1205,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         )
     ),
     subCyclesTimeIndex_(-1),
-    listXi_(),
-    listTouching_(),
-    listN_(),
+    histories_(),
     keepRecords_(false),
     wallStart_(),
     wallFaces_(),
@@ -1645,117 +1220,23 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     particleE_(),
     particleNu_()
 {
-    const dictionary& coeffs = this->coeffDict();
+    checkCoeffs();
+    makeLaws(this->coeffDict());
 
-    if
-    (
-        this->coeffDict().found("deltaBl")
-     && !(deltaBl_ >= 0 && deltaBl_ <= maxDistance_)
-    )
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry deltaBl = " << deltaBl_ << " is out of range: >= 0,"
-            << " at most maxInteractionDistance = " << maxDistance_
-            << exit(FatalIOError);
-    }
-
-    // The neighbour search bins the mesh's bounding box by this distance:
-    // a longer one finds the same pairs
-    const scalar diagonal = mag(owner.mesh().bounds().span());
-    if (!(maxDistance_ <= diagonal))
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry maxInteractionDistance = " << maxDistance_
-            << " is out of range (0, " << diagonal << "] (the diagonal of the"
-            << " mesh's bounding box)" << exit(FatalIOError);
-    }
-    if (!(deltaBlRatio_ >= 0 && deltaBlRatio_ < 1))
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry deltaBlRatio = " << deltaBlRatio_
-            << " is out of range [0, 1)" << exit(FatalIOError);
-    }
-
-    makeLaws(coeffs);
-
-    const word tModel
-    (
-        coeffs.template lookupOrDefault<word>("tangentialModel", "mindlin")
-    );
-    if (tModel == "coulomb")
-    {
-        tangential_ = tangentialModel::coulomb;
-    }
-    else if (tModel != "mindlin")
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry tangentialModel " << tModel
-            << " is unknown: valid are coulomb, mindlin" << exit(FatalIOError);
-    }
-
-    const word m(coeffs.template lookupOrDefault<word>("method", "automatic"));
-    if (m == "robust")
-    {
-        method_ = ellipsoidContact::method::robust;
-    }
-    else if (m == "polynomial")
-    {
-        method_ = ellipsoidContact::method::polynomial;
-    }
-    else if (m != "automatic")
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry method " << m
-            << " is unknown: valid are automatic, robust, polynomial"
-            << exit(FatalIOError);
-    }
-
-    // The wall faces in reach are taken from the interaction list of the
-    // parcel's cell at the list build: complete while the parcel stays
-    // within skin/2 of its position then (see buildNeighbourList)
-    if (!(skin_ > 0) || !(skin_ <= maxDistance_))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry neighbourSkin = " << Foam::name(skin_)
-            << " is out of range (0, maxInteractionDistance = "
-            << Foam::name(maxDistance_) << "]" << exit(FatalIOError);
-    }
-
-    if (resolutionSteps_ < 1)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry collisionResolutionSteps = " << resolutionSteps_
-            << " is out of range: >= 1" << exit(FatalIOError);
-    }
-
-    Info<< "    Ellipsoid Hertz contact: stiffness ratio chi = " << chi_
-        << ", buffer layer "
-        << (deltaBl_ >= 0
-            ? Foam::name(deltaBl_) + " m"
-            : Foam::name(deltaBlRatio_) + " x smallest semi-axis").c_str()
-        << ", tangential " << tModel << endl;
-    const particleMaterials& materials = owner.constProps().materials();
-    for (label a = 0; a < nMaterials_; ++a)
-    {
-        const std::string what
+    // The narrow-phase methods a case may select
+    static const Enum<ellipsoidContact::method> methods
+    ({
+        {ellipsoidContact::method::automatic, "automatic"},
+        {ellipsoidContact::method::robust, "robust"},
+        {ellipsoidContact::method::polynomial, "polynomial"},
+    });
+    method_ =
+        methods.getOrDefault
         (
-            nMaterials_ > 1 ? "    " + materials.name(a) + ": " : "    "
+            "method", this->coeffDict(), ellipsoidContact::method::automatic
         );
-        for (label b = a; b < nMaterials_; ++b)
-        {
-            const contactLaw& l = pairLaw(a, b);
-            const std::string with
-            (
-                nMaterials_ > 1 ? "with " + materials.name(b) + " " : ""
-            );
-            Info<< what.c_str() << with.c_str() << "E* = " << l.Estar << ", G* = " << l.Gstar
-                << ", e = " << l.e << " (dashpot beta = " << l.beta
-                << "), mu = " << l.mu << endl;
-        }
-        const contactLaw& l = wallLaw(a);
-        Info<< what.c_str() << "walls: E* = " << l.Estar << ", e = " << l.e
-            << " (beta = " << l.beta << "), mu = " << l.mu << endl;
-    }
+
+    printLaws();
 }
 
 
@@ -1766,6 +1247,8 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
 )
 :
     ContactModel<CloudType>(cm),
+    pairContact_(cm.coeffDict()),
+    wallContact_(cm.coeffDict().subDict("walls"), &pairContact_),
     il_(cm.owner().mesh())
 {
     NotImplemented;
@@ -1822,7 +1305,7 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     scalarList rayleighFactor(nMaterials_);
     forAll(logE2, m)
     {
-        logE2[m] = 2*Foam::log(pairLaw(m, m).Estar);
+        logE2[m] = 2*Foam::log(pairProperties(m, m).Estar);
         rayleighFactor[m] =
             Foam::sqrt(particleE_[m]/(2*(1 + particleNu_[m])))
            *(0.8766 + 0.163*particleNu_[m]);
@@ -1878,7 +1361,7 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
         scalar Estar = 0;
         for (label m = 0; m < nMaterials_; ++m)
         {
-            Estar = max(Estar, pairLaw(m, m).Estar);
+            Estar = max(Estar, pairProperties(m, m).Estar);
         }
         FatalIOErrorInFunction(this->coeffDict())
             << "The shortest collision time, " << minTc << " s (Hertz, of"
@@ -1931,9 +1414,9 @@ Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
             << resolutionSteps_ << " steps = " << dtC
             << " s (Rayleigh time step, Rasera Eq. 13: " << minRayleigh
             << " s): " << n << " sub-cycles of " << deltaT/n << " s" << nl
-            << "    Neighbour list (skin " << skin_ << " m): "
-            << listPartners_.size() << " candidate pairs, "
-            << nListBuilds_ << " builds so far" << endl;
+            << "    Neighbour list (skin " << list_.skin() << " m): "
+            << list_.nPairs() << " candidate pairs, "
+            << list_.nBuilds() << " builds so far" << endl;
     }
 
     return n;
@@ -1954,7 +1437,7 @@ void Foam::EllipsoidCollision<CloudType>::collide()
         il_.sendReferredData(this->owner().cellOccupancy(), pBufs);
         realRealInteraction();
         wallInteraction();
-        scatterForces();
+        bodies_.scatter();
         il_.receiveReferredData(pBufs, startOfRequests);
         realReferredInteraction();
     }
@@ -1962,7 +1445,7 @@ void Foam::EllipsoidCollision<CloudType>::collide()
     {
         realRealInteraction();
         wallInteraction();
-        scatterForces();
+        bodies_.scatter();
     }
 
     postInteraction();

@@ -7,7 +7,6 @@
 #include "ewaldSum.H"
 #include "pairwiseCoulomb.H"
 #include "meshPoisson.H"
-#include "MeshPoisson.H"
 #include "cyclicPolyPatch.H"
 #include "processorHalo.H"
 #include "emptyPolyPatch.H"
@@ -570,11 +569,7 @@ Foam::vectorField Foam::ElectrostaticsSurvey<CloudType>::evaluate
         // charges it would not iterate at all, so each timed solve starts
         // from zero (an upper bound of a run's solves from the previous
         // step's potential)
-        auto* mp = dynamic_cast<MeshPoisson<CloudType>*>(model.get());
-        if (mp)
-        {
-            mp->solver().resetPotential();
-        }
+        model->forgetWarmStart();
         clockTime timer;
         for (label i = 0; i < n; ++i)
         {

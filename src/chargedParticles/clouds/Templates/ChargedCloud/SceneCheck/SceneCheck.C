@@ -651,11 +651,7 @@ Foam::DynamicList<Foam::string> Foam::SceneCheck<CloudType>::check() const
     s.nSub = max(label(1), cloud_.collision().nSubCycles());
     s.vol = gSum(cloud_.mesh().cellVolumes());
     reduce(s.volParticles, sumOp<scalar>());
-    const auto* ec =
-        dynamic_cast<const typename CloudType::contactModelType*>
-        (
-            &cloud_.collision()
-        );
+    const auto* ec = cloud_.contactModel();
     s.tHertz = ec ? ec->collisionTime() : GREAT;
     // Electrical kinds of the patches (Phi's conditions or meshPoisson's
     // defaults: what a mesh solve would take them for)

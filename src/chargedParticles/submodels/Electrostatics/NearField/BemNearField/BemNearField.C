@@ -606,7 +606,7 @@ void Foam::BemNearField<CloudType>::readState()
     // Each processor keeps what it held when the state was written (on
     // as many processors) and its own parcels' (the solvers of the first
     // step ask the processors near them for the rest)
-    typename InducedDipoleNearField<CloudType>::parcelIdSet own;
+    typename NearFieldModel<CloudType>::parcelIdSet own;
     for (const auto& p : this->owner())
     {
         own.insert(labelPair(p.origProc(), p.origId()));
@@ -645,7 +645,8 @@ Foam::BemNearField<CloudType>::BemNearField
     CloudType& owner
 )
 :
-    InducedDipoleNearField<CloudType>(dict, owner, 4),
+    NearFieldModel<CloudType>(dict, owner),
+    dipoles_(dict, owner, 4),
     clusterGap_(dict.template lookupOrDefault<scalar>("clusterGap", 1)),
     nPatches_(dict.template lookupOrDefault<label>("nPatches", 1200)),
     isolated_
@@ -744,7 +745,8 @@ Foam::BemNearField<CloudType>::BemNearField
     const BemNearField<CloudType>& nf
 )
 :
-    InducedDipoleNearField<CloudType>(nf),
+    NearFieldModel<CloudType>(nf),
+    dipoles_(nf.dipoles_),
     clusterGap_(nf.clusterGap_),
     nPatches_(nf.nPatches_),
     isolated_(nf.isolated_),
@@ -841,7 +843,7 @@ Foam::boolList Foam::BemNearField<CloudType>::nearClusters
     reduce(sMax, maxOp<scalar>());
     reduce(dMax, maxOp<scalar>());
     const scalar rCut = sMax*(2 + clusterGap_);
-    const scalar rNear = multipoleNeighbours_ ? this->rNearFor(dMax) : 0;
+    const scalar rNear = multipoleNeighbours_ ? dipoles_.rNearFor(dMax) : 0;
 
     // This processor's parcels and the others' within reach of its box,
     // and their copies through the cyclic patches
@@ -1275,7 +1277,7 @@ void Foam::BemNearField<CloudType>::setNeighbourMultipoles
     {
         forPairsWithinCutoff
         (
-            x, x, this->rNearFor(gp.dMax), 0,
+            x, x, dipoles_.rNearFor(gp.dMax), 0,
             [&](const label a, const label b, const vector&, const scalar)
             {
                 if (a < b && clusterOf[a] != clusterOf[b])
@@ -1875,8 +1877,8 @@ void Foam::BemNearField<CloudType>::solveClusters
     // charge of the members comes from their last solvers. Isolated parcels'
     // dipoles enter as pair terms within the dipole solve's radius
     const scalar rDipole2 =
-        (isolated_ == "inducedDipole" && this->nPolarisable())
-      ? sqr(this->rNear()) : -1;
+        (isolated_ == "inducedDipole" && dipoles_.nPolarisable())
+      ? sqr(dipoles_.rNear()) : -1;
     const label N = gp.x.size();
     for (vectorField* f : {&res.F, &res.M, &res.P, &res.Fout, &res.Mout})
     {
@@ -1942,7 +1944,7 @@ void Foam::BemNearField<CloudType>::applyResults
 )
 {
     // Members in contact with another parcel: chi^(2/5) (Ruan Eq. 44)
-    const scalar w = this->contactWeight();
+    const scalar w = dipoles_.contactWeight();
     label i = 0;
     for (auto& p : this->owner())
     {
@@ -2006,7 +2008,7 @@ void Foam::BemNearField<CloudType>::correct
     cpuTime timer;
     if (isolated_ == "inducedDipole")
     {
-        this->solveDipoles(farField, cs.members);
+        dipoles_.solveDipoles(farField, cs.members);
         dipoleTime_ += timer.cpuTimeIncrement();
     }
     else
@@ -2065,7 +2067,7 @@ void Foam::BemNearField<CloudType>::info() const
 {
     if (isolated_ == "inducedDipole")
     {
-        InducedDipoleNearField<CloudType>::info();
+        dipoles_.info();
     }
     Info<< "    BEM clusters                    = " << stats_.nClusters
         << " (" << stats_.nInClusters << " parcels, largest "
@@ -2074,7 +2076,7 @@ void Foam::BemNearField<CloudType>::info() const
         << gmresIterationsTotal_ << " since the start; residual "
         << stats_.gmresResidual << "), " << stats_.nShapes << " meshes ("
         << std::round(stats_.cacheBytes/1048576) << " MB)" << nl;
-    if (this->contactWeight() != 1)
+    if (dipoles_.contactWeight() != 1)
     {
         Info<< "    BEM members in contact (x chi^0.4) = "
             << stats_.nInContact << nl;

@@ -1,0 +1,321 @@
+/*---------------------------------------------------------------------------*\
+    chargedFoam: unit tests of the contact laws (GoogleTest)
+
+    The laws' parts (normalModel, tangentialModel, rollingModel) checked
+    against what defines them, not against their own formulas:
+      - hertzDashpot restitutes the e it was calibrated for: a body
+        bouncing off a wall, integrated by the leapfrog the clouds use,
+        for several masses, radii, moduli and speeds;
+      - an elastic frictionless impact conserves energy (the onset
+        correction), and the elastic energy in the books is the Hertz
+        potential 8/15 E* sqrt(R) delta^5/2;
+      - Coulomb friction is mu F_n against the slip; the Mindlin spring
+        never exceeds mu F_n and never creates energy (dissipated >= 0 in
+        every kick of random sequences);
+      - the rolling torque never reverses the relative spin;
+      - selection: the dictionary entries pick the parts, a wall law
+        takes the pairs' parts unless it names its own, unknown names and
+        out-of-range constants are errors.
+
+    Measured numbers are printed as "[ measured ] ..." lines.
+\*---------------------------------------------------------------------------*/
+
+#include "contactLaw.H"
+#include "Random.H"
+#include "error.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace Foam;
+
+namespace
+{
+
+void report(const char* what, const double value)
+{
+    std::printf("[ measured ] %-58s %.3e\n", what, value);
+}
+
+
+dictionary lawDict
+(
+    const word& tangential = "mindlin",
+    const scalar e = 0.5,
+    const scalar mu = 0.3
+)
+{
+    dictionary d;
+    d.add("tangentialModel", tangential);
+    d.add("e", e);
+    d.add("mu", mu);
+    return d;
+}
+
+
+// A normal contact of overlap delta against a wall along +x
+ellipsoidContact::result normalContact(const scalar delta, const scalar R)
+{
+    ellipsoidContact::result c;
+    c.contact = delta > 0;
+    c.n = vector(1, 0, 0);
+    c.overlap = delta;
+    c.reducedRadius = R;
+    return c;
+}
+
+
+// A body of mass m approaching a wall at v0 along +x, integrated by the
+// kick-drift-kick leapfrog with nSteps steps per Hertz collision time;
+// returns the rebound speed over v0 and the elastic energy of the books at
+// the deepest overlap against the Hertz potential there
+scalar bounce
+(
+    const contactLaw& law,
+    const contactProperties& p,
+    const scalar m,
+    const scalar R,
+    const scalar v0,
+    const scalar nSteps,
+    scalar* potentialError = nullptr
+)
+{
+    // Hertz collision time (Johnson 1985)
+    const scalar tc =
+        2.87*std::pow(sqr(m)/(R*sqr(p.Estar)*v0), 0.2);
+    const scalar dt = tc/nSteps;
+
+    // Start half a step's drift from the wall, so that the contact begins
+    // within a step
+    scalar x = -0.37*v0*dt, v = v0, a = 0;
+    scalar worst = 0;
+    vector xi(Zero);
+    for (label step = 0; step < 100*nSteps; ++step)
+    {
+        v += 0.5*dt*a;
+        x += v*dt;
+        a = 0;
+        if (x > 0)
+        {
+            scalar dUdR;
+            contactWork work{0, 0};
+            const vector F =
+                law.force
+                (
+                    p, normalContact(x, R), vector(v, 0, 0), m, 1/m, dt, xi,
+                    dUdR, work
+                );
+            a = F.x()/m;
+            const scalar U = 8.0/15.0*p.Estar*std::sqrt(R)*std::pow(x, 2.5);
+            worst = max(worst, mag(work.elastic - U)/U);
+        }
+        v += 0.5*dt*a;
+        if (x < 0 && v < 0)
+        {
+            break;
+        }
+    }
+    if (potentialError)
+    {
+        *potentialError = worst;
+    }
+    return -v/v0;
+}
+
+} // End anonymous namespace
+
+
+TEST(hertzDashpot, restitutesTheCalibratedCoefficient)
+{
+    Random rnd(7);
+    scalar worst = 0;
+    for (const scalar e : {0.1, 0.3, 0.5, 0.7, 0.9, 0.99})
+    {
+        const contactLaw law(lawDict("mindlin", e, 0));
+        for (label k = 0; k < 4; ++k)
+        {
+            // masses of 1e-9 to 1e-3 kg, radii of 1e-5 to 1e-2 m, moduli
+            // of 1e6 to 1e11 Pa, speeds of 1e-3 to 10 m/s
+            const scalar m = std::pow(10.0, -9 + 6*rnd.sample01<scalar>());
+            const scalar R = std::pow(10.0, -5 + 3*rnd.sample01<scalar>());
+            const scalar E = std::pow(10.0, 6 + 5*rnd.sample01<scalar>());
+            const scalar v0 = std::pow(10.0, -3 + 4*rnd.sample01<scalar>());
+            const contactProperties p =
+                law.properties(E, 0.3, E, 0.3, dictionary(), e, 0, 0);
+            const scalar eMeasured = bounce(law, p, m, R, v0, 400);
+            worst = max(worst, mag(eMeasured - e));
+            EXPECT_NEAR(eMeasured, e, 2e-3) << "e " << e << ", m " << m;
+        }
+    }
+    report("hertzDashpot: largest |e - e_given| at 400 steps", worst);
+}
+
+
+TEST(hertzDashpot, elasticImpactConservesEnergy)
+{
+    const contactLaw law(lawDict("mindlin", 1, 0));
+    const contactProperties p =
+        law.properties(1e8, 0.3, 2e11, 0.3, dictionary(), 1, 0, 0);
+    scalar potentialError = 0;
+    const scalar e = bounce(law, p, 1e-6, 1e-3, 0.5, 50, &potentialError);
+    report("elastic impact at 50 steps: |1 - e^2| (energy)", mag(1 - sqr(e)));
+    report("books' elastic energy against the Hertz potential", potentialError);
+    EXPECT_LT(mag(1 - sqr(e)), 1e-6);
+    EXPECT_LT(potentialError, 1e-12);
+}
+
+
+TEST(coulombFriction, isMuFnAgainstTheSlip)
+{
+    const contactLaw law(lawDict("coulomb", 0.5, 0.4));
+    const contactProperties p =
+        law.properties(1e8, 0.3, 1e8, 0.3, dictionary(), 0.5, 0.4, 0);
+    const vector vRel(-0.01, 0.3, -0.4);       // approaching, slipping
+    vector xi(Zero);
+    scalar dUdR;
+    contactWork work{0, 0};
+    const scalar dt = 1e-6;
+    const vector F =
+        law.force
+        (
+            p, normalContact(1e-6, 1e-3), vRel, 1e-6, 2e6, dt, xi, dUdR,
+            work
+        );
+    const scalar Fn = -F.x();
+    const vector Ft(0, F.y(), F.z());
+    const vector vt(0, vRel.y(), vRel.z());
+    EXPECT_GT(Fn, 0);
+    EXPECT_NEAR(mag(Ft), 0.4*Fn, 1e-12*Fn);
+    EXPECT_NEAR((Ft & vt)/(mag(Ft)*mag(vt)), -1, 1e-14);
+    EXPECT_GE(work.dissipated, 0.4*Fn*mag(vt)*dt*(1 - 1e-12));
+}
+
+
+TEST(mindlinSpring, boundedByFrictionAndNeverCreatesEnergy)
+{
+    const contactLaw law(lawDict("mindlin", 0.5, 0.3));
+    const contactProperties p =
+        law.properties(5e6, 0.3, 5e6, 0.3, dictionary(), 0.5, 0.3, 0);
+    Random rnd(11);
+    label nSlip = 0, nKicks = 0;
+    scalar worstExcess = 0;
+    for (label seq = 0; seq < 200; ++seq)
+    {
+        vector xi(Zero);
+        scalar delta = 1e-7*(1 + rnd.sample01<scalar>());
+        for (label k = 0; k < 50; ++k)
+        {
+            // random normals near x, overlaps and relative velocities
+            ellipsoidContact::result c = normalContact(delta, 5e-4);
+            c.n = vector(1, 0.1*rnd.GaussNormal<scalar>(), 0.1*rnd.GaussNormal<scalar>());
+            c.n /= mag(c.n);
+            const vector vRel = 1e-3*rnd.GaussNormal<vector>();
+            scalar dUdR;
+            contactWork work{0, 0};
+            const vector F =
+                law.force(p, c, vRel, 1e-6, 2e6, 1e-6, xi, dUdR, work);
+            const scalar Fn = -(F & c.n);
+            const vector Ft = F + Fn*c.n;
+            ++nKicks;
+            if (mag(Ft) >= (1 - 1e-12)*0.3*Fn)
+            {
+                ++nSlip;
+            }
+            if (Fn > 0)
+            {
+                worstExcess = max(worstExcess, (mag(Ft) - 0.3*Fn)/Fn);
+            }
+            // what the contact takes from the motion is stored (elastic)
+            // or dissipated: never created (to round-off of the terms)
+            EXPECT_GE
+            (
+                work.dissipated,
+                -1e-12*(mag(F)*mag(vRel)*1e-6 + work.elastic)
+            );
+            delta = max(1e-9, delta*(1 + 0.2*rnd.GaussNormal<scalar>()));
+        }
+    }
+    report("Mindlin: kicks at the friction limit (of 10000)", nSlip);
+    report("Mindlin: largest (|F_t| - mu F_n)/F_n", worstExcess);
+    EXPECT_GT(nSlip, 100);           // both regimes are exercised
+    EXPECT_LT(nSlip, nKicks - 100);
+    EXPECT_LE(worstExcess, 1e-12);
+}
+
+
+TEST(constantTorque, neverReversesTheSpin)
+{
+    const contactLaw law(lawDict());
+    const contactProperties p =
+        law.properties(1e8, 0.3, 1e8, 0.3, dictionary(), 0.5, 0.3, 0.05);
+    const scalar dt = 1e-5, I = 1e-12;
+    for (const scalar w : {1e-6, 1e-2, 1.0, 100.0})
+    {
+        const vector omega(0, 0, w);
+        scalar dissipated = 0;
+        const vector M =
+            law.rollingTorque
+            (
+                p, normalContact(1e-6, 1e-3), vector(-1e-3, 0, 0), omega, I,
+                dt, dissipated
+            );
+        EXPECT_LE(M.z(), 0);
+        EXPECT_NEAR(M.x(), 0, 1e-300);
+        // both half kicks of a step leave the spin's sign
+        EXPECT_GE(w + dt*M.z()/I, -1e-12*w);
+        EXPECT_NEAR(M.z(), -min(0.05*1e-3*1e-3, I*w/dt), 1e-12*mag(M.z()));
+        EXPECT_GE(dissipated, 0);
+    }
+}
+
+
+TEST(contactLaw, selectionAndErrors)
+{
+    dictionary pair(lawDict("mindlin"));
+    const contactLaw pairLaw(pair);
+    EXPECT_EQ(pairLaw.normal().type(), "hertzDashpot");
+    EXPECT_EQ(pairLaw.tangential().type(), "mindlin");
+    EXPECT_EQ(pairLaw.rolling().type(), "constantTorque");
+
+    // A wall law takes the pairs' parts unless it names its own
+    const contactLaw sameWalls(dictionary(), &pairLaw);
+    EXPECT_EQ(sameWalls.tangential().type(), "mindlin");
+    dictionary walls;
+    walls.add("tangentialModel", word("coulomb"));
+    const contactLaw ownWalls(walls, &pairLaw);
+    EXPECT_EQ(ownWalls.tangential().type(), "coulomb");
+
+    FatalIOError.throwExceptions();
+    dictionary bad;
+    bad.add("tangentialModel", word("bogus"));
+    EXPECT_THROW(contactLaw law(bad), Foam::IOerror);
+    EXPECT_THROW
+    (
+        pairLaw.properties(1e8, 0.3, 1e8, 0.3, dictionary(), 1.5, 0.3, 0),
+        Foam::IOerror
+    );
+    EXPECT_THROW
+    (
+        pairLaw.properties(1e8, 0.3, 1e8, 0.3, dictionary(), 0.5, -1, 0),
+        Foam::IOerror
+    );
+    dictionary badRolling;
+    badRolling.add("rollingFriction", -0.1);
+    EXPECT_THROW
+    (
+        pairLaw.properties(1e8, 0.3, 1e8, 0.3, badRolling, 0.5, 0.3, 0),
+        Foam::IOerror
+    );
+}
+
+
+int main(int argc, char** argv)
+{
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
+
+
+// ************************************************************************* //
