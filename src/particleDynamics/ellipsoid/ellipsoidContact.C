@@ -324,6 +324,67 @@ const sampleSet& samples()
 }
 
 
+// The Newton step (s1, s2) on the tangent plane (t1, t2) at s for the
+// gradient (G1, G2), |G| = magG: the Riemannian Hessian, shifted
+// (Levenberg-Marquardt, mu > 0) where not safely positive definite, the
+// step limited to the trust radius maxStep (its length magS)
+void newtonStep
+(
+    const depthFunction& f,
+    const depthFunction::state& s,
+    const vector& t1,
+    const vector& t2,
+    const scalar G1,
+    const scalar G2,
+    const scalar magG,
+    const scalar L,
+    const scalar maxStep,
+    scalar& s1,
+    scalar& s2,
+    scalar& magS,
+    scalar& mu
+)
+{
+    // Riemannian Hessian on the sphere: projected Euclidean Hessian
+    // minus (m . grad g) I = g I (g is 1-homogeneous). At the contact
+    // it is R1 + R2 - overlap I (radii-of-curvature tensors).
+    const vector Ht1 = f.hessian(s, t1);
+    const vector Ht2 = f.hessian(s, t2);
+    const scalar H11 = (t1 & Ht1) - s.g;
+    const scalar H22 = (t2 & Ht2) - s.g;
+    const scalar H12 = 0.5*((t1 & Ht2) + (t2 & Ht1));
+
+    // Levenberg-Marquardt shift if not safely positive definite
+    const scalar tr = 0.5*(H11 + H22);
+    const scalar rad = Foam::sqrt(sqr(0.5*(H11 - H22)) + H12*H12);
+    const scalar lMin = tr - rad, lMax = tr + rad;
+    mu = 0;
+    if (!(lMin > 1e-10*max(mag(lMax), L)))
+    {
+        mu = -lMin + 1e-3*max(mag(lMax), L);
+    }
+
+    const scalar A11 = H11 + mu, A22 = H22 + mu, detA = A11*A22 - H12*H12;
+    s1 = -(A22*G1 - H12*G2)/detA;
+    s2 = -(A11*G2 - H12*G1)/detA;
+    magS = Foam::sqrt(s1*s1 + s2*s2);
+    if (!std::isfinite(magS))
+    {
+        // Degenerate Hessian: steepest descent on the trust radius
+        s1 = -G1/magG*maxStep;
+        s2 = -G2/magG*maxStep;
+        magS = maxStep;
+        mu = 1;
+    }
+    if (magS > maxStep)
+    {
+        s1 *= maxStep/magS;
+        s2 *= maxStep/magS;
+        magS = maxStep;
+    }
+}
+
+
 // Damped Newton minimisation of g on the unit sphere from m0
 depthFunction::state newtonOnSphere
 (
@@ -368,43 +429,8 @@ depthFunction::state newtonOnSphere
             break;
         }
 
-        // Riemannian Hessian on the sphere: projected Euclidean Hessian
-        // minus (m . grad g) I = g I (g is 1-homogeneous). At the contact
-        // it is R1 + R2 - overlap I (radii-of-curvature tensors).
-        const vector Ht1 = f.hessian(s, t1);
-        const vector Ht2 = f.hessian(s, t2);
-        const scalar H11 = (t1 & Ht1) - s.g;
-        const scalar H22 = (t2 & Ht2) - s.g;
-        const scalar H12 = 0.5*((t1 & Ht2) + (t2 & Ht1));
-
-        // Levenberg-Marquardt shift if not safely positive definite
-        const scalar tr = 0.5*(H11 + H22);
-        const scalar rad = Foam::sqrt(sqr(0.5*(H11 - H22)) + H12*H12);
-        const scalar lMin = tr - rad, lMax = tr + rad;
-        scalar mu = 0;
-        if (!(lMin > 1e-10*max(mag(lMax), L)))
-        {
-            mu = -lMin + 1e-3*max(mag(lMax), L);
-        }
-
-        const scalar A11 = H11 + mu, A22 = H22 + mu, detA = A11*A22 - H12*H12;
-        scalar s1 = -(A22*G1 - H12*G2)/detA;
-        scalar s2 = -(A11*G2 - H12*G1)/detA;
-        scalar magS = Foam::sqrt(s1*s1 + s2*s2);
-        if (!std::isfinite(magS))
-        {
-            // Degenerate Hessian: steepest descent on the trust radius
-            s1 = -G1/magG*maxStep;
-            s2 = -G2/magG*maxStep;
-            magS = maxStep;
-            mu = 1;
-        }
-        if (magS > maxStep)
-        {
-            s1 *= maxStep/magS;
-            s2 *= maxStep/magS;
-            magS = maxStep;
-        }
+        scalar s1, s2, magS, mu;
+        newtonStep(f, s, t1, t2, G1, G2, magG, L, maxStep, s1, s2, magS, mu);
 
         // Pure Newton steps in the quadratic-convergence region are taken
         // whole: their decrease of g is below the round-off of g

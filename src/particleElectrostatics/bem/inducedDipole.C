@@ -550,13 +550,9 @@ void Foam::inducedDipole::setDistribution
 }
 
 
-Foam::label Foam::inducedDipole::solve()
+Foam::scalar Foam::inducedDipole::setChargeFields(const scalar k)
 {
     const label n = x_.size();
-    const scalar k = 1/(4*pi*pairwiseCoulomb::vacuumPermittivity*kappa0_);
-    const scalar c = chargeFields_ ? 1 : 0;
-
-    findPairs();
 
     // Field of the charges and the external field (Ec, the right-hand
     // side of Eqs. 46-47), and the charges' pair energy
@@ -585,13 +581,17 @@ Foam::label Foam::inducedDipole::solve()
             Uqq += ownedShare(ij.i, ij.j)*k*q_[ij.i]*q_[ij.j]*ir;
         }
     }
+    return Uqq;
+}
 
-    solveDipoles();
 
+void Foam::inducedDipole::addPairForces(const scalar k, const scalar c)
+{
     // Total fields, forces (Eq. 45) and torques, pair by pair: for the
     // pair (i, j), r = x_i - x_j, the field of j at i and its gradient
     // G_ab = d_a E_b (odd or even in r, which gives the other side)
-    E_ = Ec;
+    const label n = x_.size();
+    E_ = Ec_;
     dF_.setSize(n);
     dF_ = Zero;
     M_.setSize(n);
@@ -649,7 +649,21 @@ Foam::label Foam::inducedDipole::solve()
         M_[i] += pI ^ (w*Epj + wq*q_[j]*eq);
         M_[j] += pJ ^ (w*Epi - wq*q_[i]*eq);
     }
+}
 
+
+Foam::label Foam::inducedDipole::solve()
+{
+    const label n = x_.size();
+    const scalar k = 1/(4*pi*pairwiseCoulomb::vacuumPermittivity*kappa0_);
+    const scalar c = chargeFields_ ? 1 : 0;
+
+    findPairs();
+    const scalar Uqq = setChargeFields(k);
+    solveDipoles();
+    addPairForces(k, c);
+
+    const bool distributed = owned_.size() == n;
     F_.setSize(n);
     energy_ = c*Uqq;
     externalEnergy_ = 0;
@@ -660,7 +674,7 @@ Foam::label Foam::inducedDipole::solve()
         M_[i] += p_[i] ^ E0;
         if (!distributed || owned_[i])
         {
-            energy_ -= 0.5*(p_[i] & (Ec[i] - E0));
+            energy_ -= 0.5*(p_[i] & (Ec_[i] - E0));
             externalEnergy_ -= 0.5*(p_[i] & E0);
         }
     }

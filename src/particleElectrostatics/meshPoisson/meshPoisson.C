@@ -2713,6 +2713,83 @@ void Foam::meshPoisson::update
 }
 
 
+namespace
+{
+
+//- Exact Coulomb minus the S2-S2 pair field of a source of charge q at
+//  -r from the target (kq = k q; H&E Eq. 8-73), the shaped correction
+inline Foam::vector shapedPairCorrection
+(
+    const Foam::scalar kq,
+    const Foam::scalar R,
+    const Foam::vector& r,
+    const Foam::scalar r2
+)
+{
+    const Foam::scalar rm = std::sqrt(r2);
+    return (kq*Foam::s2Shape::pairDeficit(rm/R)/(r2*rm))*r;
+}
+
+} // End anonymous namespace
+
+
+void Foam::meshPoisson::refreshFarCorrection
+(
+    const UList<point>& xT,
+    const scalar k
+)
+{
+    // The far part: after a solve, or for charges that changed or moved
+    // between processors (the shapes' average then at their current
+    // positions in the same mesh field)
+    bool stale = !farValid_ || farField_.size() != xT.size();
+    reduce(stale, orOp<bool>());
+    if (!stale)
+    {
+        return;
+    }
+    const scalarField& qs = qs_;
+    const scalar R = radius_;
+    if (!shapeFresh_)
+    {
+        shapeWeights(xs_, origin_, nRealSources_);
+        averageOverShapes(origin_, nRealSources_);
+        shapeFresh_ = true;
+    }
+    farField_ = SubList<vector>(shapeField_, xT.size());
+    const bool patchPairs =
+        !lattice_.valid() && selfField_.valid()
+     && latticeMaxSources_ > 0 && patchPairMaxCharges_ > 0;
+    labelList nNear(lattice_.valid() || patchPairs ? xT.size() : 0, 0);
+
+    // The targets are the local charges, the first sources
+    forPairsWithinCutoff
+    (
+        xT, xs_, 2*R, 0,
+        [&](const label t, const label s, const vector& r, const scalar r2)
+        {
+            if (r2 >= R*R)
+            {
+                farField_[t] += shapedPairCorrection(k*qs[s], R, r, r2);
+            }
+            if (nNear.size())
+            {
+                ++nNear[t];
+            }
+        }
+    );
+    if (lattice_.valid())
+    {
+        addLatticeCorrection(xT, nNear);
+    }
+    else if (patchPairs)
+    {
+        addPatchPairCorrection(xT, nNear);
+    }
+    farValid_ = true;
+}
+
+
 void Foam::meshPoisson::addNearField
 (
     const UList<point>& xT,
@@ -2735,61 +2812,10 @@ void Foam::meshPoisson::addNearField
     };
     if (correction_ == correctionType::shaped)
     {
-        const scalar R = radius_;
-        const auto correction = [&](const label s, const vector& r, const scalar r2)
-        {
-            const scalar rm = std::sqrt(r2);
-            return (k*qs[s]*s2Shape::pairDeficit(rm/R)/(r2*rm))*r;
-        };
-
-        // The far part: after a solve, or for charges that changed or
-        // moved between processors (the shapes' average then at their
-        // current positions in the same mesh field)
-        bool stale = !farValid_ || farField_.size() != xT.size();
-        reduce(stale, orOp<bool>());
-        if (stale)
-        {
-            if (!shapeFresh_)
-            {
-                shapeWeights(xs_, origin_, nRealSources_);
-                averageOverShapes(origin_, nRealSources_);
-                shapeFresh_ = true;
-            }
-            farField_ = SubList<vector>(shapeField_, xT.size());
-            const bool patchPairs =
-                !lattice_.valid() && selfField_.valid()
-             && latticeMaxSources_ > 0 && patchPairMaxCharges_ > 0;
-            labelList nNear
-            (
-                lattice_.valid() || patchPairs ? xT.size() : 0, 0
-            );
-            forPairsWithinCutoff
-            (
-                xT, xs, 2*R, myStart,
-                [&](const label t, const label s, const vector& r, const scalar r2)
-                {
-                    if (r2 >= R*R)
-                    {
-                        farField_[t] += correction(s, r, r2);
-                    }
-                    if (nNear.size())
-                    {
-                        ++nNear[t];
-                    }
-                }
-            );
-            if (lattice_.valid())
-            {
-                addLatticeCorrection(xT, nNear);
-            }
-            else if (patchPairs)
-            {
-                addPatchPairCorrection(xT, nNear);
-            }
-            farValid_ = true;
-        }
+        refreshFarCorrection(xT, k);
 
         // The correction within R follows the charges
+        const scalar R = radius_;
         forAll(xT, t)
         {
             E[t] += farField_[t];
@@ -2803,43 +2829,42 @@ void Foam::meshPoisson::addNearField
                 {
                     coincident(t);
                 }
-                E[t] += correction(s, r, r2);
+                E[t] += shapedPairCorrection(k*qs[s], R, r, r2);
             }
         );
+        return;
     }
-    else
+
+    // cellCentroid, Rasera Eq. 31: exact minus the centroid-to-centroid
+    // field of charges in other cells
+    const pointField& cellCentres = sourceCellCentres_;
+    pointField cs(cellCentres);
     {
-        // Rasera Eq. 31: exact minus the centroid-to-centroid field of
-        // charges in other cells
-        const pointField& cellCentres = sourceCellCentres_;
-        pointField cs(cellCentres);
+        // Copies share the shift of their charge
+        cs.setSize(xs.size());
+        for (label i = nReal; i < xs.size(); ++i)
         {
-            // Copies share the shift of their charge
-            cs.setSize(xs.size());
-            for (label i = nReal; i < xs.size(); ++i)
+            cs[i] = cellCentres[origin[i]] + (xs[i] - xs[origin[i]]);
+        }
+    }
+    forPairsWithinCutoff
+    (
+        xT, xs, radius_, myStart,
+        [&](const label t, const label s, const vector& r, const scalar r2)
+        {
+            if (r2 == 0)
             {
-                cs[i] = cellCentres[origin[i]] + (xs[i] - xs[origin[i]]);
+                coincident(t);
+            }
+            E[t] += (k*qs[s]/(r2*std::sqrt(r2)))*r;
+            const vector rc(cellCentres[myStart + t] - cs[s]);
+            const scalar rc2 = magSqr(rc);
+            if (rc2 > 0)
+            {
+                E[t] -= (k*qs[s]/(rc2*std::sqrt(rc2)))*rc;
             }
         }
-        forPairsWithinCutoff
-        (
-            xT, xs, radius_, myStart,
-            [&](const label t, const label s, const vector& r, const scalar r2)
-            {
-                if (r2 == 0)
-                {
-                    coincident(t);
-                }
-                E[t] += (k*qs[s]/(r2*std::sqrt(r2)))*r;
-                const vector rc(cellCentres[myStart + t] - cs[s]);
-                const scalar rc2 = magSqr(rc);
-                if (rc2 > 0)
-                {
-                    E[t] -= (k*qs[s]/(rc2*std::sqrt(rc2)))*rc;
-                }
-            }
-        );
-    }
+    );
 }
 
 

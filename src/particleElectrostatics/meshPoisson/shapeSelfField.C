@@ -575,7 +575,6 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
     const surfaceVectorField& Sf = mesh_.Sf();
     const surfaceScalarField& magSf = mesh_.magSf();
     const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const bool ls = gradient_.leastSquares();
 
     patchSystem sys;
@@ -584,28 +583,6 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
     {
         sys.V[i] = V[patchCells[i]];
     }
-    const auto addFace =
-        [&]
-        (
-            const label lo, const label ln, const scalar a, const scalar w,
-            const vector& sf, const scalar msf, const vector& corr,
-            const point& outAt, const vector& lsOwn, const vector& lsNei
-        )
-    {
-        if (ls)
-        {
-            sys.lsOwn.append(lsOwn);
-            sys.lsNei.append(lsNei);
-        }
-        sys.own.append(lo);
-        sys.nei.append(ln);
-        sys.coeff.append(a);
-        sys.weight.append(w);
-        sys.Sf.append(sf);
-        sys.magSf.append(msf);
-        sys.corr.append(corr);
-        sys.outAt.append(outAt);
-    };
     // Internal faces and cyclic faces between two patch cells (from the
     // owner patch's side), and boundary faces with a fixed value
     forAll(patchCells, i)
@@ -614,82 +591,100 @@ Foam::shapeSelfField::patchSystem Foam::shapeSelfField::assemblePatch
         const vector& shift = patchShifts[i];
         for (const label f : mesh_.cells()[c])
         {
-            if (f < nInternal)
+            if (f >= nInternal)
             {
-                const label lo = local_[own[f]];
-                const label ln = local_[nei[f]];
-                // Once: from the owner's side, or from a patch neighbour
-                // whose owner lies outside
-                if ((own[f] == c) || lo < 0)
-                {
-                    const label o = lo < 0 ? own[f] : nei[f];
-                    addFace
-                    (
-                        lo, ln, internalCoeff_[f], weights[f], Sf[f],
-                        magSf[f], corrVec[f], C[o] + shift,
-                        ls ? gradient_.ownVector(f) : Zero,
-                        ls ? gradient_.neiVector(f) : Zero
-                    );
-                }
+                addBoundaryFace(sys, i, c, f, shift, patchShifts, bFaceOf);
                 continue;
             }
-            const label patchi = pbm.whichPatch(f);
-            const label facei = f - pbm[patchi].start();
-            const scalar b = boundaryCoeff_[patchi][facei];
-            if (!(b > 0))
+            const label lo = local_[own[f]];
+            const label ln = local_[nei[f]];
+            // Once: from the owner's side, or from a patch neighbour whose
+            // owner lies outside
+            if ((own[f] == c) || lo < 0)
             {
-                continue;
-            }
-            // The neighbour's centre across a coupled face (else the face
-            // centre), in the patch's unfolded frame
-            const point at(boundaryPoint_[patchi][facei] + shift);
-            const cyclicFvPatch* cyc =
-                isA<cyclicFvPatch>(mesh_.boundary()[patchi]);
-            if (cyc)
-            {
-                // Across a cyclic patch to a patch cell that the unfolded
-                // frame puts there: a face between two unknowns
-                const label cn = cyc->neighbFvPatch().faceCells()[facei];
-                const label ln = local_[cn];
-                const scalar delta = mag(at - C[c] - shift);
-                if
+                const label o = lo < 0 ? own[f] : nei[f];
+                sys.addFace
                 (
-                    ln >= 0
-                 && mag(C[cn] + patchShifts[ln] - at) < 1e-6*delta
-                )
-                {
-                    if (cyc->owner())
-                    {
-                        addFace
-                        (
-                            i, ln, b,
-                            weights.boundaryField()[patchi][facei],
-                            Sf.boundaryField()[patchi][facei],
-                            magSf.boundaryField()[patchi][facei],
-                            corrVec.boundaryField()[patchi][facei],
-                            point::zero,
-                            ls ? gradient_.boundaryVector(f) : Zero,
-                            ls ? gradient_.boundaryNeighbourVector(f) : Zero
-                        );
-                    }
-                    continue;
-                }
-            }
-            if (bFaceOf)
-            {
-                bFaceOf->append(f);
-            }
-            sys.bRow.append(i);
-            sys.bAt.append(at);
-            sys.bSf.append(Sf.boundaryField()[patchi][facei]);
-            sys.bCoeff.append(b);
-            if (ls)
-            {
-                sys.bLs.append(gradient_.boundaryVector(f));
+                    ls, lo, ln, internalCoeff_[f], weights[f], Sf[f],
+                    magSf[f], corrVec[f], C[o] + shift,
+                    ls ? gradient_.ownVector(f) : Zero,
+                    ls ? gradient_.neiVector(f) : Zero
+                );
             }
         }
     }
     return sys;
+}
+
+
+void Foam::shapeSelfField::addBoundaryFace
+(
+    patchSystem& sys,
+    const label i,
+    const label c,
+    const label f,
+    const vector& shift,
+    const UList<vector>& patchShifts,
+    DynamicList<label>* bFaceOf
+) const
+{
+    const vectorField& C = mesh_.C().primitiveField();
+    const surfaceScalarField& weights = mesh_.weights();
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const surfaceVectorField& corrVec = mesh_.nonOrthCorrectionVectors();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const bool ls = gradient_.leastSquares();
+
+    const label patchi = pbm.whichPatch(f);
+    const label facei = f - pbm[patchi].start();
+    const scalar b = boundaryCoeff_[patchi][facei];
+    if (!(b > 0))
+    {
+        return;
+    }
+    // The neighbour's centre across a coupled face (else the face
+    // centre), in the patch's unfolded frame
+    const point at(boundaryPoint_[patchi][facei] + shift);
+    const cyclicFvPatch* cyc = isA<cyclicFvPatch>(mesh_.boundary()[patchi]);
+    if (cyc)
+    {
+        // Across a cyclic patch to a patch cell that the unfolded frame
+        // puts there: a face between two unknowns
+        const label cn = cyc->neighbFvPatch().faceCells()[facei];
+        const label ln = local_[cn];
+        const scalar delta = mag(at - C[c] - shift);
+        if (ln >= 0 && mag(C[cn] + patchShifts[ln] - at) < 1e-6*delta)
+        {
+            if (cyc->owner())
+            {
+                sys.addFace
+                (
+                    ls, i, ln, b,
+                    weights.boundaryField()[patchi][facei],
+                    Sf.boundaryField()[patchi][facei],
+                    magSf.boundaryField()[patchi][facei],
+                    corrVec.boundaryField()[patchi][facei],
+                    point::zero,
+                    ls ? gradient_.boundaryVector(f) : Zero,
+                    ls ? gradient_.boundaryNeighbourVector(f) : Zero
+                );
+            }
+            return;
+        }
+    }
+    if (bFaceOf)
+    {
+        bFaceOf->append(f);
+    }
+    sys.bRow.append(i);
+    sys.bAt.append(at);
+    sys.bSf.append(Sf.boundaryField()[patchi][facei]);
+    sys.bCoeff.append(b);
+    if (ls)
+    {
+        sys.bLs.append(gradient_.boundaryVector(f));
+    }
 }
 
 
