@@ -10,7 +10,7 @@ All codes use the Hertz normal spring with a dashpot
 delta^1/4, the same law with alpha = sqrt(5) |beta|). They differ only in
 how beta follows from the restitution coefficient e:
   - chargedFoam integrates the Hertz impact and inverts it, so that a head-on
-    impact restitutes exactly e (EllipsoidCollision::dampingRatio);
+    impact restitutes exactly e (hertzDashpot::calibratedDampingRatio);
   - LIGGGHTS uses the linear-spring closed form
     beta = ln e / sqrt(ln^2 e + pi^2) of its `coefficientRestitution`;
   - OpenFOAM takes alpha directly.
@@ -92,7 +92,7 @@ def restitution(beta, h=2e-4):
 
 def damping_ratio(e, iterations=45):
     """beta (< 0) of the Hertz dashpot restituting e (bisection as in
-    EllipsoidCollision::dampingRatio; 45 halvings of [0, 1] reach 3e-14)."""
+    hertzDashpot::calibratedDampingRatio; 45 halvings of [0, 1] reach 3e-14)."""
     if e >= 1:
         return 0.0
     lo, hi = 0.0, 1.0

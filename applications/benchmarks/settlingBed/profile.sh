@@ -69,7 +69,7 @@ for c, s, n in rows:
                             "indexedOctree", "treeDataCell", "findCell", "cellTree", "operator>>", "stream",
                             "InjectionModel", "::KinematicCloud::KinematicCloud",
                             "ChargedCloud::ChargedCloud", "CollidingCloud::CollidingCloud",
-                            "EllipsoidCollision::EllipsoidCollision", "makeLaw", "restitution",
+                            "EllipsoidCollision::EllipsoidCollision", "contactLaw::properties", "restitution",
                             "InteractionLists::InteractionLists", "buildInteractionLists")):
         continue
     seen.add(n)
