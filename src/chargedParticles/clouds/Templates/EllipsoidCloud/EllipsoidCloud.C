@@ -65,10 +65,7 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     // fields) at the written positions, and continues only so exactly
     if (trackBeforeForces_)
     {
-        for (parcelType& p : *this)
-        {
-            p.trackDrift();
-        }
+        this->trackDrifts();
     }
 
     cloud.calculateForces();
@@ -476,33 +473,20 @@ void Foam::EllipsoidCloud<CloudType>::setLogAndTracking()
             << "Entry logInterval = " << logInterval_
             << " is out of range: >= 1 (time steps)" << exit(FatalIOError);
     }
-    if (!(trackingTolerance_ >= 0 && trackingTolerance_ <= 0.5))
-    {
-        FatalIOErrorInFunction(this->solution().dict())
-            << "Entry trackingTolerance = " << trackingTolerance_
-            << " is out of range [0, 0.5] (fraction of a cell; 0: track"
-            << " every step)" << exit(FatalIOError);
-    }
-    if (this->mesh().nSolutionD() != 3 && trackingTolerance_ > 0)
-    {
-        // The deviation from the mesh centre of 1-D/2-D cases is applied
-        // by the tracking
-        trackingTolerance_ = 0;
-    }
     if
     (
-        trackingTolerance_ > 0
-     && this->solution().active()
+        this->solution().active()
      && this->collision().active()
      && !this->contactModel()
     )
     {
         // Contact models read the centres (gatherBody); other collision
         // models (OpenFOAM's pairCollision) read the tracked positions
-        Info<< "    Lazy tracking off: collision model "
-            << this->collision().type() << " reads the tracked positions"
-            << endl;
-        trackingTolerance_ = 0;
+        this->trackEveryStep
+        (
+            "collision model " + this->collision().type()
+          + " reads the tracked positions"
+        );
     }
 }
 
@@ -522,14 +506,6 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 :
     CloudType(cloudName, rho, U, mu, g, false),
     constProps_(this->particleProperties()),
-    trackingTolerance_
-    (
-        this->solution().dict().template lookupOrDefault<scalar>
-        (
-            "trackingTolerance",
-            1e-3
-        )
-    ),
     logInterval_
     (
         this->solution().dict().template lookupOrDefault<label>
@@ -569,7 +545,6 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 :
     CloudType(c, name),
     constProps_(c.constProps_),
-    trackingTolerance_(c.trackingTolerance_),
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
@@ -589,7 +564,6 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
 :
     CloudType(mesh, name, c),
     constProps_(c.constProps_),
-    trackingTolerance_(c.trackingTolerance_),
     logInterval_(c.logInterval_),
     gatherer_(nullptr),
     kickInMove_(false),
@@ -882,7 +856,7 @@ void Foam::EllipsoidCloud<CloudType>::info()
 {
     // The kinematic information; CollidingCloud::info() would add the
     // rotational energy of spheres, replaced here by the ellipsoids' one
-    CloudType::cloudType::info();
+    CloudType::collidingCloudType::cloudType::info();
 
     // Contacts: counted by a contact model (it writes the collision
     // records only when they are read); other models keep the records of

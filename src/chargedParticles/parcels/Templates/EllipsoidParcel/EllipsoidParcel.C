@@ -16,10 +16,6 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     ParcelType(p),
     semiAxes_(p.semiAxes_),
     orientation_(p.orientation_),
-    drift_(p.drift_),
-    allowedDrift_(p.allowedDrift_),
-    centre_(p.centre_),
-    centreValid_(p.centreValid_),
     received_(p.received_)
 {}
 
@@ -34,10 +30,6 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     ParcelType(p, mesh),
     semiAxes_(p.semiAxes_),
     orientation_(p.orientation_),
-    drift_(p.drift_),
-    allowedDrift_(p.allowedDrift_),
-    centre_(p.centre_),
-    centreValid_(p.centreValid_),
     received_(p.received_)
 {}
 
@@ -82,41 +74,22 @@ bool Foam::EllipsoidParcel<ParcelType>::move
             << " the time step deltaT" << exit(FatalIOError);
     }
 
-    // The drift (lazy or tracked), then the rotation of the orientation
-    // with the kicked angular momentum and the contact body for the
-    // collision model, once, where the move ends: in parallel Cloud::move
-    // calls move again for every parcel, finished or not, until no parcel
-    // changes processor, and a parcel may arrive with its step done
+    // The drift (lazy or tracked: LazyTrackingParcel), then the rotation
+    // of the orientation with the kicked angular momentum and the contact
+    // body for the collision model, once, where the move ends: in parallel
+    // Cloud::move calls move again for every parcel, finished or not,
+    // until no parcel changes processor, and a parcel may arrive with its
+    // step done
     const bool ends = this->stepFraction() < 1 || received_;
-    typename TrackCloudType::parcelType& p =
-        static_cast<typename TrackCloudType::parcelType&>(*this);
-    auto finish = [&]()
+    const bool keep = ParcelType::move(cloud, td, trackTime);
+    if (ends && keep && !td.switchProcessor)
     {
         rotate(trackTime);
         received_ = false;
-        cloud.parcelMoved(p);
-    };
-
-    if (cloud.trackingTolerance() > 0 && this->active())
-    {
-        if (driftInCell(cloud, td, trackTime))
-        {
-            if (ends && td.keepParticle)
-            {
-                finish();
-            }
-            return td.keepParticle;
-        }
-        // The rest of the step is tracked, starting with the drift
-        trackDrift();
-    }
-
-    const bool keep = ParcelType::move(cloud, td, trackTime);
-    centreValid_ = false;
-    allowedDrift_ = -1;
-    if (ends && keep && !td.switchProcessor)
-    {
-        finish();
+        cloud.parcelMoved
+        (
+            static_cast<typename TrackCloudType::parcelType&>(*this)
+        );
     }
     return keep;
 }
@@ -149,118 +122,12 @@ void Foam::EllipsoidParcel<ParcelType>::rotate(const scalar dt)
 
 
 template<class ParcelType>
-template<class TrackCloudType>
-bool Foam::EllipsoidParcel<ParcelType>::driftInCell
-(
-    TrackCloudType& cloud,
-    trackingData& td,
-    const scalar trackTime
-)
-{
-    typename TrackCloudType::parcelType& p =
-        static_cast<typename TrackCloudType::parcelType&>(*this);
-    typename TrackCloudType::parcelType::trackingData& ttd =
-        static_cast<typename TrackCloudType::parcelType::trackingData&>(td);
-
-    ttd.switchProcessor = false;
-    ttd.keepParticle = true;
-
-    const polyMesh& mesh = this->mesh();
-    const label celli = this->cell();
-    const scalar l = cloud.cellLengthScale()[celli];
-
-    if (allowedDrift_ < 0)
-    {
-        // Half the distance of the tracked position to the nearest face
-        // plane of the cell (half: faces need not be flat), and at most
-        // the tolerance
-        const point x = this->position();
-        scalar dMin = GREAT;
-        for (const label facei : mesh.cells()[celli])
-        {
-            const vector& Sf = mesh.faceAreas()[facei];
-            dMin = min
-            (
-                dMin,
-                mag((x - mesh.faceCentres()[facei]) & Sf)/mag(Sf)
-            );
-        }
-        allowedDrift_ = min(0.5*dMin, cloud.trackingTolerance()*l);
-        centre_ = x + drift_;
-        centreValid_ = true;
-    }
-
-    // KinematicParcel::move, segment by segment (maxCo), with the
-    // displacement added to the drift instead of tracked
-    const cloudSolution& solution = cloud.solution();
-    const scalar maxCo = solution.maxCo();
-    while (ttd.keepParticle && p.stepFraction() < 1)
-    {
-        const vector s = trackTime*this->U();
-        scalar f = 1 - p.stepFraction();
-        f = min(f, maxCo);
-        f = min(f, maxCo*l/max(SMALL*l, mag(s)));
-
-        if (magSqr(drift_ + f*s) >= sqr(allowedDrift_))
-        {
-            return false;
-        }
-
-        const point start = centre();
-        drift_ += f*s;
-        centre_ += f*s;
-        p.stepFraction() += f;
-
-        const scalar dt = f*trackTime;
-        if (dt > ROOTVSMALL)
-        {
-            p.setCellValues(cloud, ttd);
-            p.calcDispersion(cloud, ttd, dt);
-            if (solution.cellValueSourceCorrection())
-            {
-                p.cellValueSourceCorrection(cloud, ttd, dt);
-            }
-            p.calc(cloud, ttd, dt);
-        }
-        p.age() += dt;
-        cloud.functions().postMove(p, dt, start, ttd.keepParticle);
-    }
-    return true;
-}
-
-
-template<class ParcelType>
-void Foam::EllipsoidParcel<ParcelType>::trackDrift()
-{
-    if (drift_ != vector::zero)
-    {
-        // Within the cell by construction: only tet faces are crossed,
-        // the step fraction stays
-        this->track(drift_, 0);
-        if (this->onBoundaryFace())
-        {
-            FatalErrorInFunction
-                << "Lazy tracking of parcel (origProc " << this->origProc()
-                << ", origId " << this->origId() << ") reached boundary face "
-                << this->face() << " with its drift " << drift_
-                << ": this is a bug" << abort(FatalError);
-        }
-        drift_ = Zero;
-    }
-    centreValid_ = false;
-    allowedDrift_ = -1;
-}
-
-
-template<class ParcelType>
 void Foam::EllipsoidParcel<ParcelType>::transformProperties(const tensor& T)
 {
     ParcelType::transformProperties(T);
 
     // Rotate the body with the transformation (rotational cyclics)
     orientation_ = (quaternion(T)*orientation_).normalized();
-    drift_ = transform(T, drift_);
-    centreValid_ = false;
 }
 
 
@@ -271,7 +138,6 @@ void Foam::EllipsoidParcel<ParcelType>::transformProperties
 )
 {
     ParcelType::transformProperties(separation);
-    centreValid_ = false;
 }
 
 

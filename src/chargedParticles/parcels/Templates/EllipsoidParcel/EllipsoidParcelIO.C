@@ -14,7 +14,7 @@ Foam::string Foam::EllipsoidParcel<ParcelType>::propertyList_ =
 template<class ParcelType>
 const std::size_t Foam::EllipsoidParcel<ParcelType>::sizeofFields
 (
-    offsetof(EllipsoidParcel<ParcelType>, drift_) + sizeof(vector)
+    offsetof(EllipsoidParcel<ParcelType>, orientation_) + sizeof(quaternion)
   - offsetof(EllipsoidParcel<ParcelType>, semiAxes_)
 );
 
@@ -33,20 +33,13 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
     ParcelType(mesh, is, readFields, newFormat),
     semiAxes_(Zero),
     orientation_(quaternion::I),
-    drift_(Zero),
-    allowedDrift_(-1),
-    centre_(Zero),
-    centreValid_(false),
     received_(false)
 {
-    // The drift is streamed for the copies referred to other processors
-    // (a transferred parcel has none: it was tracked); written fields
-    // have none (flushed before writing)
     if (readFields)
     {
         if (is.format() == IOstream::ASCII)
         {
-            is >> semiAxes_ >> orientation_ >> drift_;
+            is >> semiAxes_ >> orientation_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
@@ -58,7 +51,6 @@ Foam::EllipsoidParcel<ParcelType>::EllipsoidParcel
             readRawScalar(is, &w);
             readRawScalar(is, v.data(), vector::nComponents);
             orientation_ = quaternion(w, v);
-            readRawScalar(is, drift_.data(), vector::nComponents);
             is.endRawRead();
         }
         else
@@ -244,8 +236,7 @@ Foam::Ostream& Foam::operator<<
     {
         os  << static_cast<const ParcelType&>(p)
             << token::SPACE << p.semiAxes_
-            << token::SPACE << p.orientation_
-            << token::SPACE << p.drift_;
+            << token::SPACE << p.orientation_;
     }
     else
     {

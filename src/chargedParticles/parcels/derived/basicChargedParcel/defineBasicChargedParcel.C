@@ -10,8 +10,11 @@
 namespace Foam
 {
     // The layers below ChargedParcel that OpenFOAM does not define
-    typedef EllipsoidParcel<CollidingParcel<KinematicParcel<particle>>>
-        basicEllipsoidParcel;
+    typedef LazyTrackingParcel<CollidingParcel<KinematicParcel<particle>>>
+        basicLazyTrackingParcel;
+    defineTemplateTypeNameAndDebug(basicLazyTrackingParcel, 0);
+
+    typedef EllipsoidParcel<basicLazyTrackingParcel> basicEllipsoidParcel;
     defineTemplateTypeNameAndDebug(basicEllipsoidParcel, 0);
 
     defineTemplateTypeNameAndDebug(basicChargedParcel, 0);
