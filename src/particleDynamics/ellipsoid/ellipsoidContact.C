@@ -95,6 +95,30 @@ void tangents(const vector& m, vector& t1, vector& t2)
           Gradient of the reduced radius (see ellipsoidContact.H)
 \*---------------------------------------------------------------------------*/
 
+// S^-1 n and the support distance h = sqrt(n.S^-1 n) of e along the unit n:
+// what the curvature and its gradient need of the support point. The
+// penetration depth's Newton state holds them for the common normal
+// (depthFunction::state w, h: the same operations), so the contact's
+// curvatures do not compute them again
+struct supportAlong
+{
+    vector Mn;
+    scalar h;
+
+    supportAlong(const vector& Mn, const scalar h)
+    :
+        Mn(Mn),
+        h(h)
+    {}
+
+    supportAlong(const ellipsoid& e, const vector& n)
+    :
+        Mn(e.Sinv() & n),
+        h(Foam::sqrt(n & Mn))
+    {}
+};
+
+
 // Mean curvature (Ruan Eq. 37) of e at its support point along the unit n,
 // as a function of n: K(n) = h(n) (tr S - n.S n)/2, h = sqrt(n.S^-1 n).
 // gradK: the tangential part of its gradient (of the extension
@@ -105,13 +129,14 @@ void curvatureAlong
 (
     const ellipsoid& e,
     const vector& n,
+    const supportAlong& sup,
     scalar& K,
     vector& gradK
 )
 {
-    const vector Mn = e.Sinv() & n;
+    const vector& Mn = sup.Mn;
     const vector Sn = e.S() & n;
-    const scalar h = Foam::sqrt(n & Mn);
+    const scalar h = sup.h;
     const scalar trS = tr(e.S());
     const scalar tau = trS - (n & Sn);
     K = 0.5*h*tau;
@@ -131,11 +156,11 @@ class radiiOfCurvature
 
 public:
 
-    radiiOfCurvature(const ellipsoid& e, const vector& n)
+    radiiOfCurvature(const ellipsoid& e, const supportAlong& sup)
     :
         Minv_(e.Sinv()),
-        Mn_(Minv_ & n),
-        h_(Foam::sqrt(n & Mn_))
+        Mn_(sup.Mn),
+        h_(sup.h)
     {}
 
     vector operator()(const vector& t) const
@@ -147,27 +172,29 @@ public:
 
 // gradR of a common-normal contact r (ellipsoidContact::
 // reducedRadiusGradient, see ellipsoidContact.H) and the curvature sum
-// K1 + K2 along its normal
+// K1 + K2 along its normal, with both bodies' support data along it
 radiusGradient radiusGradientAndCurvature
 (
     const ellipsoid& e1,
     const ellipsoid& e2,
     const result& r,
+    const supportAlong& sup1,
+    const supportAlong& sup2,
     scalar& Ksum
 )
 {
     const vector& n = r.n;
     scalar K1, K2;
     vector gradK1, gradK2;
-    curvatureAlong(e1, n, K1, gradK1);
-    curvatureAlong(e2, n, K2, gradK2);
+    curvatureAlong(e1, n, sup1, K1, gradK1);
+    curvatureAlong(e2, n, sup2, K2, gradK2);
     Ksum = K1 + K2;
     const vector G = gradK1 + gradK2;
 
     // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P
     vector t1, t2;
     tangents(n, t1, t2);
-    const radiiOfCurvature D1(e1, n), D2(e2, n);
+    const radiiOfCurvature D1(e1, sup1), D2(e2, sup2);
     const vector Dt1 = D1(t1) + D2(t1);
     const vector Dt2 = D1(t2) + D2(t2);
     const scalar H11 = (t1 & Dt1) - r.overlap;
@@ -505,9 +532,14 @@ result commonNormalResult
     r.overlap = max(s.g, scalar(0));
     if (r.converged)
     {
-        // R = 1/(K1 + K2) from the same K(n) as its gradient
+        // R = 1/(K1 + K2) from the same K(n) as its gradient; the Newton
+        // state holds S^-1 n and h of both bodies along n = s.m
         scalar Ksum;
-        r.gradR = radiusGradientAndCurvature(e1, e2, r, Ksum);
+        r.gradR = radiusGradientAndCurvature
+        (
+            e1, e2, r, supportAlong(s.w1, s.h1), supportAlong(s.w2, s.h2),
+            Ksum
+        );
         r.reducedRadius = 1/Ksum;
     }
     else
@@ -1156,7 +1188,10 @@ Foam::ellipsoidContact::reducedRadiusGradient
 )
 {
     scalar Ksum;
-    return radiusGradientAndCurvature(e1, e2, r, Ksum);
+    return radiusGradientAndCurvature
+    (
+        e1, e2, r, supportAlong(e1, r.n), supportAlong(e2, r.n), Ksum
+    );
 }
 
 
@@ -1199,7 +1234,7 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
         // the orientation moves K (Description)
         scalar K;
         vector gradK;
-        curvatureAlong(e, r.n, K, gradK);
+        curvatureAlong(e, r.n, supportAlong(e, r.n), K, gradK);
         r.reducedRadius = 1/K;
         r.gradR.rotation1 = sqr(r.reducedRadius)*(r.n ^ gradK);
     }

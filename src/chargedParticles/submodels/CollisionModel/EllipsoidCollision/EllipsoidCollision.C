@@ -563,6 +563,39 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
 
 
 template<class CloudType>
+Foam::ellipsoidContact::result
+Foam::EllipsoidCollision<CloudType>::listPairGeometry
+(
+    const label k,
+    const contactBody& A,
+    const point& xA,
+    const contactBody& B,
+    const point& xB
+)
+{
+    vector& n = histories_.direction(k);
+    if (A.sphere && B.sphere)
+    {
+        return pairGeometry(A, xA, B, xB, false, n);
+    }
+
+    // A lasting contact's normal turns smoothly: started from its linear
+    // extrapolation, Newton is within the square of the step's turn of the
+    // normal, and converges in one step instead of two (the start changes
+    // the converged normal only at round-off, ellipsoidContact.H)
+    vector& dn = histories_.directionChange(k);
+    const vector before = n;
+    n += dn;
+    const ellipsoidContact::result c = pairGeometry(A, xA, B, xB, false, n);
+    const bool lasting =
+        histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
+     && magSqr(before) > 0 && magSqr(n) > 0;
+    dn = lasting ? n - before : vector(Zero);
+    return c;
+}
+
+
+template<class CloudType>
 Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 (
     const ellipsoidContact::result& c,
@@ -671,10 +704,11 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             {
                 histories_.setTouching(k, false);
                 histories_.direction(k) = Zero;
+                histories_.directionChange(k) = Zero;
                 continue;
             }
             const ellipsoidContact::result c =
-                pairGeometry(A, xA, B, xB, false, histories_.direction(k));
+                listPairGeometry(k, A, xA, B, xB);
             if (!c.contact || c.overlap <= 0)
             {
                 histories_.setTouching(k, false);
