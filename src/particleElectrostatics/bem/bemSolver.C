@@ -7,6 +7,7 @@
 #include "pairwiseCoulomb.H"
 #include "mathematicalConstants.H"
 #include "error.H"
+#include "checkedEntry.H"
 
 #include <Eigen/Dense>
 
@@ -98,22 +99,80 @@ Foam::bemSolverControls Foam::bemSolverControls::read
     const dictionary& dict
 )
 {
+    auto atLeastOne = [](const label n) { return n >= 1; };
+    auto nonNegative = [](const label n) { return n >= 0; };
+
     bemSolverControls c;
-    dict.readIfPresent("tolerance", c.tolerance);
-    dict.readIfPresent("maxIter", c.maxIter);
-    dict.readIfPresent("restart", c.restart);
-    dict.readIfPresent("theta", c.theta);
-    dict.readIfPresent("order", c.order);
+    c.tolerance = getCheckedOrDefault<scalar>
+    (
+        dict, "tolerance", c.tolerance,
+        [](const scalar x) { return x > 0 && x < 1; },
+        " (0, 1)", " (GMRES relative residual)"
+    );
+    c.maxIter = getCheckedOrDefault<label>
+    (
+        dict, "maxIter", c.maxIter, atLeastOne, ": >= 1",
+        " (GMRES iteration limit)"
+    );
+    c.restart = getCheckedOrDefault<label>
+    (
+        dict, "restart", c.restart, atLeastOne, ": >= 1",
+        " (GMRES restart length)"
+    );
+    c.theta = getCheckedOrDefault<scalar>
+    (
+        dict, "theta", c.theta,
+        [](const scalar x) { return x > 0 && x <= 1; },
+        " (0, 1]", " (treecode opening angle)"
+    );
+    c.order = getCheckedOrDefault<label>
+    (
+        dict, "order", c.order,
+        [](const label n) { return n >= 0 && n <= 2; },
+        " [0, 2]", " (treecode expansion order)"
+    );
     dict.readIfPresent("leafSize", c.leafSize);
-    dict.readIfPresent("fmmOrder", c.fmmOrder);
-    dict.readIfPresent("fmmTheta", c.fmmTheta);
-    dict.readIfPresent("fmmLeafSize", c.fmmLeafSize);
+    c.fmmOrder = getCheckedOrDefault<label>
+    (
+        dict, "fmmOrder", c.fmmOrder,
+        [](const label n) { return n >= 1 && n <= 10; },
+        " [1, 10]", " (FMM expansion order)"
+    );
+    c.fmmTheta = getCheckedOrDefault<scalar>
+    (
+        dict, "fmmTheta", c.fmmTheta,
+        [](const scalar x) { return x > 0 && x < 1; },
+        " (0, 1)", " (FMM opening parameter)"
+    );
+    c.fmmLeafSize = getCheckedOrDefault<label>
+    (
+        dict, "fmmLeafSize", c.fmmLeafSize, atLeastOne, ": >= 1"
+    );
     dict.readIfPresent("precondition", c.precondition);
-    dict.readIfPresent("maxPreconditionerPatches", c.maxPreconditionerPatches);
+    // Patch counts compared with a particle mesh's or the problem's size:
+    // maxPreconditionerPatches 0 gives no particle a preconditioner block,
+    // directOutputMax 0 evaluates the output by the fast sums at any size
+    c.maxPreconditionerPatches = getCheckedOrDefault<label>
+    (
+        dict, "maxPreconditionerPatches", c.maxPreconditionerPatches,
+        nonNegative,
+        ": >= 0 (patches of the largest particle mesh that gets a"
+        " preconditioner block)"
+    );
     dict.readIfPresent("nearQuadrature", c.nearQuadrature);
-    dict.readIfPresent("nearFactor", c.nearFactor);
+    c.nearFactor = getCheckedOrDefault<scalar>
+    (
+        dict, "nearFactor", c.nearFactor,
+        [](const scalar x) { return x >= 0 && std::isfinite(x); },
+        ": it must be finite and >= 0 (0: no near quadrature)"
+    );
     dict.readIfPresent("chargeConservation", c.chargeConservation);
-    dict.readIfPresent("directOutputMax", c.directOutputMax);
+    c.directOutputMax = getCheckedOrDefault<label>
+    (
+        dict, "directOutputMax", c.directOutputMax, nonNegative,
+        ": >= 0 (patches up to which forces, torques and energy use direct"
+        " sums)"
+    );
 
     word w;
     if (dict.readIfPresent("matvec", w))
@@ -139,61 +198,6 @@ Foam::bemSolverControls Foam::bemSolverControls::read
                 << "selfTerm " << w << " unknown; allowed: gauss curvature zero"
                 << exit(FatalIOError);
         }
-    }
-    if (!(c.tolerance > 0 && c.tolerance < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "tolerance " << c.tolerance << " out of range (0, 1)"
-            << exit(FatalIOError);
-    }
-    if (c.maxIter < 1 || c.restart < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxIter " << c.maxIter << " and restart " << c.restart
-            << " must be >= 1" << exit(FatalIOError);
-    }
-    if (!(c.theta > 0 && c.theta <= 1) || c.order < 0 || c.order > 2)
-    {
-        FatalIOErrorInFunction(dict)
-            << "theta " << c.theta << " must be in (0, 1] and order "
-            << c.order << " in [0, 2]" << exit(FatalIOError);
-    }
-    if
-    (
-        c.fmmOrder < 1 || c.fmmOrder > 10
-     || !(c.fmmTheta > 0 && c.fmmTheta < 1) || c.fmmLeafSize < 1
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "fmmOrder " << c.fmmOrder << " must be in [1, 10], fmmTheta "
-            << c.fmmTheta << " in (0, 1) and fmmLeafSize " << c.fmmLeafSize
-            << " >= 1" << exit(FatalIOError);
-    }
-    if (!(c.nearFactor >= 0) || !std::isfinite(c.nearFactor))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry nearFactor = " << c.nearFactor << " in "
-            << dict.name().c_str() << " is out of range: it must be finite"
-            << " and >= 0 (0: no near quadrature)" << exit(FatalIOError);
-    }
-    // Patch counts compared with a particle mesh's or the problem's size:
-    // maxPreconditionerPatches 0 gives no particle a preconditioner block,
-    // directOutputMax 0 evaluates the output by the fast sums at any size
-    if (c.maxPreconditionerPatches < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry maxPreconditionerPatches = "
-            << c.maxPreconditionerPatches << " in " << dict.name().c_str()
-            << " is out of range: >= 0 (patches of the largest particle mesh"
-            << " that gets a preconditioner block)" << exit(FatalIOError);
-    }
-    if (c.directOutputMax < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry directOutputMax = " << c.directOutputMax << " in "
-            << dict.name().c_str() << " is out of range: >= 0 (patches up to"
-            << " which forces, torques and energy use direct sums)"
-            << exit(FatalIOError);
     }
     return c;
 }

@@ -22,6 +22,7 @@
 #include "PstreamBuffers.H"
 #include "facePlanes.H"
 #include "s2Shape.H"
+#include "checkedEntry.H"
 
 #include <Eigen/QR>
 
@@ -179,16 +180,13 @@ Foam::scalar Foam::meshPoisson::readRadius() const
 
 Foam::scalar Foam::meshPoisson::readSelfFieldRadius() const
 {
-    const scalar D = coeffs_.lookupOrDefault<scalar>("selfFieldRadius", 3);
-    if (!(D == 0 || (D >= 2 && D <= 10)))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry selfFieldRadius = " << D << " in "
-            << coeffs_.name().c_str() << " must be 0 (keep each shape's "
-            << "field on itself) or in [2, 10] shape radii (the patch on "
-            << "which it is found and removed)" << exit(FatalIOError);
-    }
-    return D;
+    return getCheckedOrDefault<scalar>
+    (
+        coeffs_, "selfFieldRadius", 3,
+        [](const scalar D) { return D == 0 || (D >= 2 && D <= 10); },
+        ": it must be 0 (keep each shape's field on itself) or in [2, 10]"
+        " shape radii (the patch on which it is found and removed)"
+    );
 }
 
 
@@ -233,32 +231,25 @@ Foam::label Foam::meshPoisson::readNonOrthCorrectors() const
         // to round-off
         return maxNonOrthogonality_ > 1e-6 ? 20 : 0;
     }
-    const label n = coeffs_.get<label>(key);
-    if (n < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry " << key << " = " << n << " in "
-            << coeffs_.name().c_str() << " must be >= 0 (re-solves per"
-            << " evaluation with the Laplacian's non-orthogonal correction"
-            << " updated)" << exit(FatalIOError);
-    }
-    return n;
+    return getChecked<label>
+    (
+        coeffs_, key,
+        [](const label n) { return n >= 0; },
+        ": it must be >= 0 (re-solves per evaluation with the Laplacian's"
+        " non-orthogonal correction updated)"
+    );
 }
 
 
 Foam::scalar Foam::meshPoisson::readNonOrthTolerance() const
 {
-    const scalar tol =
-        coeffs_.lookupOrDefault<scalar>("nonOrthogonalTolerance", 1e-6);
-    if (!(tol >= 0 && tol < 1))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry nonOrthogonalTolerance = " << tol << " in "
-            << coeffs_.name().c_str() << " must be in [0, 1) (initial "
-            << "residual of the Phi solve below which no further "
-            << "non-orthogonal corrector runs)" << exit(FatalIOError);
-    }
-    return tol;
+    return getCheckedOrDefault<scalar>
+    (
+        coeffs_, "nonOrthogonalTolerance", 1e-6,
+        [](const scalar tol) { return tol >= 0 && tol < 1; },
+        ": it must be in [0, 1) (initial residual of the Phi solve below"
+        " which no further non-orthogonal corrector runs)"
+    );
 }
 
 
@@ -1645,12 +1636,6 @@ void Foam::meshPoisson::removeSplitSelfFields
 
 void Foam::meshPoisson::checkCoeffs() const
 {
-    if (!(epsilonR_ > 0) || !std::isfinite(epsilonR_))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry epsilonR (relative permittivity of the medium) = "
-            << epsilonR_ << " must be > 0" << exit(FatalIOError);
-    }
     if (correction_ == correctionType::shaped && coeffs_.found("interpolation"))
     {
         FatalIOErrorInFunction(coeffs_)
@@ -1659,30 +1644,6 @@ void Foam::meshPoisson::checkCoeffs() const
             << " correction averages the mesh field over each charge's own"
             << " shape with its deposition weights (momentum conserving);"
             << " remove the entry" << exit(FatalIOError);
-    }
-    if (latticeMaxSources_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry latticeCorrectionSources = " << latticeMaxSources_
-            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
-            << " sources within 2 radii of a charge for which the pair"
-            << " correction, lattice or patch, is made; 0: none)"
-            << exit(FatalIOError);
-    }
-    if (patchPairMaxCharges_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry patchPairCorrectionCharges = " << patchPairMaxCharges_
-            << " in " << coeffs_.name().c_str() << " must be >= 0 (the most"
-            << " charges that get the patch pair correction, one patch solve"
-            << " each; 0: none)" << exit(FatalIOError);
-    }
-    if (solveInterval_ < 1)
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Entry solveInterval = " << solveInterval_ << " must be >= 1 "
-            << "(solve the potential every n-th force evaluation)"
-            << exit(FatalIOError);
     }
     const fvSolution& fvSol = mesh_;
     if (!fvSol.subDict("solvers").found(Phi_.name()))
@@ -1746,7 +1707,16 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
 :
     mesh_(mesh),
     coeffs_(coeffs),
-    epsilonR_(coeffs.lookupOrDefault<scalar>("epsilonR", 1)),
+    epsilonR_
+    (
+        getCheckedOrDefault<scalar>
+        (
+            coeffs, "epsilonR", 1,
+            [](const scalar x) { return x > 0 && std::isfinite(x); },
+            ": it must be finite and > 0",
+            " (relative permittivity of the medium)"
+        )
+    ),
     correction_
     (
         correctionTypeNames.lookupOrDefault
@@ -1761,7 +1731,16 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     (
         coeffs.lookupOrDefault<word>("interpolation", "cell")
     ),
-    solveInterval_(coeffs.lookupOrDefault<label>("solveInterval", 1)),
+    solveInterval_
+    (
+        getCheckedOrDefault<label>
+        (
+            coeffs, "solveInterval", 1,
+            [](const label n) { return n >= 1; },
+            ": it must be >= 1 (solve the potential every n-th force"
+            " evaluation)"
+        )
+    ),
     maxNonOrthogonality_(maxNonOrthogonality()),
     nNonOrthCorr_(readNonOrthCorrectors()),
     nonOrthTolerance_(readNonOrthTolerance()),
@@ -1769,11 +1748,24 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     selfFieldSampling_(readSelfFieldSampling()),
     latticeMaxSources_
     (
-        coeffs.lookupOrDefault<label>("latticeCorrectionSources", 8)
+        getCheckedOrDefault<label>
+        (
+            coeffs, "latticeCorrectionSources", 8,
+            [](const label n) { return n >= 0; },
+            ": it must be >= 0 (the most sources within 2 radii of a charge"
+            " for which the pair correction, lattice or patch, is made;"
+            " 0: none)"
+        )
     ),
     patchPairMaxCharges_
     (
-        coeffs.lookupOrDefault<label>("patchPairCorrectionCharges", 16)
+        getCheckedOrDefault<label>
+        (
+            coeffs, "patchPairCorrectionCharges", 16,
+            [](const label n) { return n >= 0; },
+            ": it must be >= 0 (the most charges that get the patch pair"
+            " correction, one patch solve each; 0: none)"
+        )
     ),
     gradient_
     (

@@ -10,6 +10,7 @@
 #include "Pstream.H"
 #include "processorHalo.H"
 #include "cutoffPairs.H"
+#include "checkedEntry.H"
 #include "ListListOps.H"
 
 #include <mpi.h>
@@ -754,7 +755,15 @@ Foam::p3m::p3m(const dictionary& dict)
     accuracy_(readScalar(dict, "accuracy", 1e-4, 0, 0.1)),
     order_(readLabel(dict, "order", 5, 1, 7)),
     rCutUser_(dict.getOrDefault<scalar>("rCut", 0)),
-    alphaUser_(dict.getOrDefault<scalar>("alpha", 0)),
+    alphaUser_
+    (
+        getCheckedOrDefault<scalar>
+        (
+            dict, "alpha", 0,
+            [](const scalar x) { return x >= 0 && std::isfinite(x); },
+            " [0, inf) (0: automatic)"
+        )
+    ),
     meshUser_{0, 0, 0},
     fastErfcUser_(readFastErfc(dict)),
     ready_(false),
@@ -782,12 +791,6 @@ Foam::p3m::p3m(const dictionary& dict)
             << "Entry 'rCut' = " << rCutUser_ << " is out of range [0, "
             << 0.5*cmptMin(L_) << "] (0: automatic; at most L/2)"
             << exit(FatalIOError);
-    }
-    if (alphaUser_ < 0 || !std::isfinite(alphaUser_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'alpha' = " << alphaUser_ << " is out of range"
-            << " [0, inf) (0: automatic)" << exit(FatalIOError);
     }
     if (dict.found("mesh"))
     {
