@@ -8,6 +8,7 @@
 #include "ContactModel.H"
 #include "inputLimits.H"
 #include "subCycleTime.H"
+#include "Enum.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
 #include "IOdictionary.H"
@@ -408,19 +409,21 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
             << " injected into another, as a fraction of the pair's"
             << " smallest semi-axis; default 0)" << exit(FatalIOError);
     }
+    enum class momentumCoupling { sourceTerms, conservativeImplicit };
+    static const Enum<momentumCoupling> couplings
+    ({
+        {momentumCoupling::sourceTerms, "sourceTerms"},
+        {momentumCoupling::conservativeImplicit, "conservativeImplicit"},
+    });
     const word coupling
     (
         solDict.template lookupOrDefault<word>
         (
             "momentumCoupling",
-            "sourceTerms"
+            couplings[momentumCoupling::sourceTerms]
         )
     );
-    if (coupling == "conservativeImplicit")
-    {
-        conservativeCoupling_ = this->solution().coupled();
-    }
-    else if (coupling != "sourceTerms")
+    if (!couplings.found(coupling))
     {
         FatalIOErrorInFunction(solDict)
             << "Entry momentumCoupling = " << coupling << " is not one"
@@ -428,6 +431,9 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
             << " conserved on both sides), sourceTerms (OpenFOAM's"
             << " sourceTerms/schemes/U)" << exit(FatalIOError);
     }
+    conservativeCoupling_ =
+        couplings[coupling] == momentumCoupling::conservativeImplicit
+     && this->solution().coupled();
     if (conservativeCoupling_)
     {
         if (this->solution().steadyState())
