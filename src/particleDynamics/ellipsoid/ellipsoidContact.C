@@ -147,25 +147,25 @@ void curvatureAlong
 
 // Radii-of-curvature tensor D = grad grad h of e along the unit n,
 // applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n);
-// S^-1 n and h once per body and normal
+// S^-1 n and h from the body's supportAlong along n
 class radiiOfCurvature
 {
     const symmTensor& Minv_;
-    const vector Mn_;
-    const scalar h_;
+    const supportAlong& sup_;
 
 public:
 
     radiiOfCurvature(const ellipsoid& e, const supportAlong& sup)
     :
         Minv_(e.Sinv()),
-        Mn_(sup.Mn),
-        h_(sup.h)
+        sup_(sup)
     {}
 
     vector operator()(const vector& t) const
     {
-        return (Minv_ & t)/h_ - Mn_*((Mn_ & t)/(h_*h_*h_));
+        const vector& Mn = sup_.Mn;
+        const scalar h = sup_.h;
+        return (Minv_ & t)/h - Mn*((Mn & t)/(h*h*h));
     }
 };
 

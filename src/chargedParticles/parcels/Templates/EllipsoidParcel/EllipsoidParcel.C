@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "EllipsoidParcel.H"
-#include "transform.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -128,16 +127,6 @@ void Foam::EllipsoidParcel<ParcelType>::transformProperties(const tensor& T)
 
     // Rotate the body with the transformation (rotational cyclics)
     orientation_ = (quaternion(T)*orientation_).normalized();
-}
-
-
-template<class ParcelType>
-void Foam::EllipsoidParcel<ParcelType>::transformProperties
-(
-    const vector& separation
-)
-{
-    ParcelType::transformProperties(separation);
 }
 
 
