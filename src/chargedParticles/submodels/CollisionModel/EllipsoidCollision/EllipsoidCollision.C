@@ -1327,50 +1327,66 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     // a wall contact (m* = m, R* = R, speed |U|) lasts longer
     // Hertz collision duration (Johnson 1985)
     //     t_c = 2.868 (m*^2/(R* E*^2 v))^(1/5),
-    // minimised through the logarithm of its monotonic argument (one exp
-    // per step; the argument itself overflows for the heavy, soft or
-    // resting parcels of the accepted ranges, inputLimits.H)
+    // minimised through its monotonic argument: a parcel's in double as
+    // (m*/E*)^2/R*/v where the steps stay in the normal range (no log per
+    // parcel), else through its logarithm (the heavy, soft or resting
+    // parcels of the accepted ranges, inputLimits.H, overflow it)
+    scalar minTcArg = VGREAT;
     scalar minLogTcArg = VGREAT;
-    scalar minRayleigh = GREAT;
+    scalar minRayleighSqr = VGREAT;
 
-    // Per material: the log of E*^2 of two of its parcels, and the
+    // Per material: E* of two of its parcels, and the square of the
     // Rayleigh step's sqrt(G) (0.8766 + 0.163 nu)
-    scalarList logE2(nMaterials_);
-    scalarList rayleighFactor(nMaterials_);
-    forAll(logE2, m)
+    scalarList Estar(nMaterials_);
+    scalarList rayleighFactorSqr(nMaterials_);
+    forAll(Estar, m)
     {
-        logE2[m] = 2*Foam::log(pairProperties(m, m).Estar);
-        rayleighFactor[m] =
-            Foam::sqrt(particleE_[m]/(2*(1 + particleNu_[m])))
-           *(0.8766 + 0.163*particleNu_[m]);
+        Estar[m] = pairProperties(m, m).Estar;
+        rayleighFactorSqr[m] =
+            particleE_[m]/(2*(1 + particleNu_[m]))
+           *sqr(0.8766 + 0.163*particleNu_[m]);
     }
+    auto normal = [](const scalar x) { return x > 1e-290 && x < 1e290; };
     for (const parcelType& p : this->owner())
     {
         const label material = p.material();
         const vector& s = p.semiAxes();
-        const scalar Rtip = sqr(cmptMin(s))/cmptMax(s);
-        const scalar m = p.mass();
+        const scalar c = cmptMin(s);
+        const scalar Rtip = sqr(c)/cmptMax(s);
+        const scalar mStar = 0.5*p.mass();
         const scalar v = max(2*mag(p.U()), VSMALL);
 
-        minLogTcArg = min
-        (
-            minLogTcArg,
-            2*Foam::log(0.5*m) - Foam::log(0.5*Rtip) - logE2[material]
-          - Foam::log(v)
-        );
+        const scalar mByE = mStar/Estar[material];
+        const scalar arg = normal(mByE) ? mByE*mByE/(0.5*Rtip)/v : 0;
+        if (normal(mByE*mByE) && normal(arg))
+        {
+            minTcArg = min(minTcArg, arg);
+        }
+        else
+        {
+            minLogTcArg = min
+            (
+                minLogTcArg,
+                2*(Foam::log(mStar) - Foam::log(Estar[material]))
+              - Foam::log(0.5*Rtip) - Foam::log(v)
+            );
+        }
 
         // Rayleigh time step, Rasera Eq. (13), for the report
-        minRayleigh = min
-        (
-            minRayleigh,
-            cmptMin(s)*Foam::sqrt(p.rho())/rayleighFactor[material]
-        );
+        minRayleighSqr =
+            min(minRayleighSqr, sqr(c)*p.rho()/rayleighFactorSqr[material]);
     }
+    reduce(minTcArg, minOp<scalar>());
     reduce(minLogTcArg, minOp<scalar>());
-    reduce(minRayleigh, minOp<scalar>());
+    reduce(minRayleighSqr, minOp<scalar>());
     if (rayleighStep)
     {
-        *rayleighStep = minRayleigh*constant::mathematical::pi;
+        *rayleighStep =
+            Foam::sqrt(minRayleighSqr)*constant::mathematical::pi;
+    }
+    if (minTcArg < VGREAT)
+    {
+        minLogTcArg = min(minLogTcArg, Foam::log(minTcArg));
     }
     return
         0.2*minLogTcArg < Foam::log(GREAT/2.868)
