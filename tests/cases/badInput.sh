@@ -309,9 +309,9 @@ badCase zeroCutoffDistance 'triboChargingModel +GammaKappa;\s*GammaKappaCoeffs' 
     'triboChargingModel workFunction; workFunctionCoeffs' \
     'Entry cutoffDistance is missing'
 badCase negativeTrackingTolerance 'maxCo +0.3;' 'maxCo 0.3; trackingTolerance -1e-3;' \
-    'Entry trackingTolerance = -0.001 is out of range \[0, 0.5\]'
+    'Entry trackingTolerance = -0.001 in .* is out of range \[0, 0.5\]'
 badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
-    'Entry logInterval = 0 is out of range: >= 1'
+    'Entry logInterval = 0 in .* is out of range: >= 1'
 badCase unknownMomentumCoupling 'maxCo +0.3;' 'maxCo 0.3; momentumCoupling implicit;' \
     'Entry momentumCoupling = implicit is not one of: conservativeImplicit'
 # Several materials: an unknown material, an unlike pair without Gamma,

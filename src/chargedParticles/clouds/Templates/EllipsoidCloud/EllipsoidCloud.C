@@ -7,6 +7,7 @@
 #include "CollisionModel.H"
 #include "ContactModel.H"
 #include "inputLimits.H"
+#include "checkedEntry.H"
 #include "subCycleTime.H"
 #include "Enum.H"
 #include "fvMatrices.H"
@@ -398,17 +399,14 @@ template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
 {
     const dictionary& solDict = this->solution().dict();
-    maxInjectionOverlap_ =
-        solDict.template lookupOrDefault<scalar>("maxInjectionOverlap", 0);
-    if (!(maxInjectionOverlap_ >= 0 && maxInjectionOverlap_ <= 0.5))
-    {
-        FatalIOErrorInFunction(solDict)
-            << "Entry maxInjectionOverlap = " << maxInjectionOverlap_
-            << " in " << solDict.name().c_str() << " is out of range: it"
-            << " must be in [0, 0.5] (the largest overlap of a parcel"
-            << " injected into another, as a fraction of the pair's"
-            << " smallest semi-axis; default 0)" << exit(FatalIOError);
-    }
+    maxInjectionOverlap_ = getCheckedOrDefault<scalar>
+    (
+        solDict, "maxInjectionOverlap", 0,
+        [](const scalar f) { return f >= 0 && f <= 0.5; },
+        ": it must be in [0, 0.5] (the largest overlap of a parcel injected"
+        " into another, as a fraction of the pair's smallest semi-axis;"
+        " default 0)"
+    );
     enum class momentumCoupling { sourceTerms, conservativeImplicit };
     static const Enum<momentumCoupling> couplings
     ({
@@ -473,12 +471,6 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
 template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::setLogAndTracking()
 {
-    if (logInterval_ < 1)
-    {
-        FatalIOErrorInFunction(this->solution().dict())
-            << "Entry logInterval = " << logInterval_
-            << " is out of range: >= 1 (time steps)" << exit(FatalIOError);
-    }
     if
     (
         this->solution().active()
@@ -514,10 +506,10 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     constProps_(this->particleProperties()),
     logInterval_
     (
-        this->solution().dict().template lookupOrDefault<label>
+        getCheckedOrDefault<label>
         (
-            "logInterval",
-            1
+            this->solution().dict(), "logInterval", 1,
+            [](const label n) { return n >= 1; }, ": >= 1 (time steps)"
         )
     ),
     gatherer_(nullptr),

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "LazyTrackingCloud.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -10,15 +11,12 @@ template<class CloudType>
 Foam::scalar Foam::LazyTrackingCloud<CloudType>::readTrackingTolerance() const
 {
     const dictionary& solDict = this->solution().dict();
-    const scalar tol =
-        solDict.template lookupOrDefault<scalar>("trackingTolerance", 1e-3);
-    if (!(tol >= 0 && tol <= 0.5))
-    {
-        FatalIOErrorInFunction(solDict)
-            << "Entry trackingTolerance = " << tol
-            << " is out of range [0, 0.5] (fraction of a cell; 0: track"
-            << " every step)" << exit(FatalIOError);
-    }
+    const scalar tol = getCheckedOrDefault<scalar>
+    (
+        solDict, "trackingTolerance", 1e-3,
+        [](const scalar t) { return t >= 0 && t <= 0.5; },
+        " [0, 0.5] (fraction of a cell; 0: track every step)"
+    );
 
     // The deviation from the mesh centre of 1-D/2-D cases is applied by
     // the tracking

@@ -1090,12 +1090,6 @@ void Foam::EllipsoidCollision<CloudType>::checkCoeffs() const
             << " is out of range (0, " << diagonal << "] (the diagonal of the"
             << " mesh's bounding box)" << exit(FatalIOError);
     }
-    if (!(deltaBlRatio_ >= 0 && deltaBlRatio_ < 1))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry deltaBlRatio = " << deltaBlRatio_
-            << " is out of range [0, 1)" << exit(FatalIOError);
-    }
 
     // The wall faces in reach are taken from the interaction list of the
     // parcel's cell at the list build: complete while the parcel stays
@@ -1106,13 +1100,6 @@ void Foam::EllipsoidCollision<CloudType>::checkCoeffs() const
             << "Entry neighbourSkin = " << Foam::name(list_.skin())
             << " is out of range (0, maxInteractionDistance = "
             << Foam::name(maxDistance_) << "]" << exit(FatalIOError);
-    }
-
-    if (resolutionSteps_ < 1)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry collisionResolutionSteps = " << resolutionSteps_
-            << " is out of range: >= 1" << exit(FatalIOError);
     }
 }
 
@@ -1174,17 +1161,21 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     deltaBl_(this->coeffDict().template lookupOrDefault<scalar>("deltaBl", -1)),
     deltaBlRatio_
     (
-        this->coeffDict().template lookupOrDefault<scalar>("deltaBlRatio", 0.05)
+        getCheckedOrDefault<scalar>
+        (
+            this->coeffDict(), "deltaBlRatio", 0.05,
+            [](const scalar r) { return r >= 0 && r < 1; }, " [0, 1)"
+        )
     ),
     chi_(owner.constProps().stiffnessRatio()),
     nBufferWarnings_(0),
     nBufferWarningsTotal_(0),
     resolutionSteps_
     (
-        this->coeffDict().template lookupOrDefault<label>
+        getCheckedOrDefault<label>
         (
-            "collisionResolutionSteps",
-            50
+            this->coeffDict(), "collisionResolutionSteps", 50,
+            [](const label n) { return n >= 1; }, ": >= 1"
         )
     ),
     method_(ellipsoidContact::method::automatic),
