@@ -74,7 +74,7 @@ badCase missingRho0     'rho0 +1000;' '' \
 badCase zeroRho0        'rho0 +1000;' 'rho0 0;' \
     'Entry rho0 .* is out of range'
 badCase zeroPermittivity 'epsilonR +1;' 'epsilonR 0;' \
-    'Entry epsilonR .* = 0 is out of range'
+    'Entry epsilonR .* = 0 in .* is out of range'
 badCase unknownModel    'electrostaticsModel directCoulomb;' 'electrostaticsModel coulombic;' \
     'Unknown electrostaticsModel type coulombic'
 
@@ -149,7 +149,7 @@ badCase negativePseudoParticleNe 'electrostaticsModel directCoulomb;' \
     "Entry 'Ne' = -1 is out of range \[0, 1000\]"
 badCase negativePotentialInterval 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel periodic; periodicCoeffs { method p3m; potentialInterval -1; }' \
-    'Entry potentialInterval = -1 is out of range \[0, inf\)'
+    'Entry potentialInterval = -1 in .* is out of range \[0, inf\)'
 badCase potentialsOfPseudoParticle 'electrostaticsModel directCoulomb;' \
     'electrostaticsModel periodic; periodicCoeffs { method pseudoParticle; potentialInterval 5; }' \
     'Entry potentialInterval = 5: method pseudoParticle gives no potentials'
@@ -209,7 +209,7 @@ badCase hugeParticleEpsilonR 'rho0 +1000;' 'rho0 1000; epsilonR 1e300;' \
 badCase hugeShape 'rho0 +1000;' 'rho0 1000; shape (2 1e300 1);' \
     'Entry shape \(semi-axes ratios a:b:c\) = .* the largest at most 1000 times the smallest'
 badCase tinyMediumEpsilonR 'epsilonR +1;' 'epsilonR 1e-200;' \
-    'Entry epsilonR \(relative permittivity of the medium\) = [.0-9]+e-20[01] is out of range: it must be finite and >= 1'
+    'Entry epsilonR \(relative permittivity of the medium\) = [.0-9]+e-20[01] in .* is out of range: it must be finite and >= 1'
 FOAM_SIGFPE=false badCase nanSOI 'SOI +0;' 'SOI #eval{sqrt(-1)};' \
     'Entry SOI \(start of injection \[s\]\) = -?nan'
 badCase coupledWithoutCarrier 'coupled +false;' 'coupled true;' \

@@ -95,9 +95,6 @@ REVIEWED = {
     ('checkedEntry.H', 'key'):
         ([], 'getChecked/getCheckedOrDefault(dict, key, ...): helpers,'
              ' calls scanned'),
-    ('InducedDipoleNearField.C', 'key'):
-        ([], 'readPositive/readLabel(key, default, ...): helpers, calls'
-             ' scanned'),
     ('ExplicitParcelInjection.C', 'key'):
         ([], 'readParcelScalar(dict, i, key, ...): helper, calls scanned'),
     ('RaseraTriboCharging.C', 'key'):
@@ -110,9 +107,6 @@ REVIEWED = {
         ([], 'oneOf(dict, a, b, optional): helper, calls scanned'),
     ('triboParameters.C', 'b'):
         ([], 'oneOf(dict, a, b, optional): helper, calls scanned'),
-    ('ChargedCloud.C', 'key'):
-        (['e', 'mu'], 'checkPatchInteraction: e and mu of OpenFOAM\'s'
-             ' standardWallInteractionCoeffs, range-checked'),
     ('MeshPoisson.C', 'key'):
         (['radius', 'rCut'], 'checkedCoeffs: the charge shape radius of'
              ' meshPoissonCoeffs, range-checked before meshPoisson reads it'),

@@ -21,6 +21,7 @@ Description
 
 #include "fvCFD.H"
 #include "basicChargedCloud.H"
+#include "checkedEntry.H"
 #include "runProgress.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

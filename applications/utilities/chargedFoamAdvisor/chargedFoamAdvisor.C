@@ -36,6 +36,7 @@ Usage
 
 #include "fvCFD.H"
 #include "basicChargedCloud.H"
+#include "checkedEntry.H"
 #include "timeSelector.H"
 #include "ElectrostaticsSurvey.H"
 #include "OFstream.H"

@@ -8,6 +8,7 @@
 #include "ContactModel.H"
 #include "SceneCheck.H"
 #include "inputLimits.H"
+#include "checkedEntry.H"
 
 #include <algorithm>
 
@@ -107,14 +108,12 @@ void Foam::ChargedCloud<CloudType>::checkInjectors() const
                 << injector.volumeTotal() << " m3: check its size entries"
                 << " (sizeDistribution, d, semiAxes)" << exit(FatalIOError);
         }
-        scalar SOI = 0;
-        if (d.readIfPresent("SOI", SOI) && !std::isfinite(SOI))
-        {
-            FatalIOErrorInFunction(d)
-                << "Entry SOI (start of injection [s]) = " << SOI << " in "
-                << d.name().c_str() << " is out of range: it must be finite"
-                << exit(FatalIOError);
-        }
+        getCheckedOrDefault<scalar>
+        (
+            d, "SOI", 0,
+            [](const scalar t) { return std::isfinite(t); },
+            ": it must be finite", " (start of injection [s])"
+        );
     }
 }
 
@@ -129,18 +128,15 @@ void Foam::ChargedCloud<CloudType>::checkPatchInteraction() const
         return;
     }
     const dictionary& d = this->patchInteraction().coeffDict();
-    for (const word key : {"e", "mu"})
-    {
-        scalar v = 0;
-        if (d.readIfPresent(key, v) && !(v >= 0 && v <= 1))
-        {
-            FatalIOErrorInFunction(d)
-                << "Entry " << key
-                << (key == "e" ? " (restitution coefficient)" : " (friction)")
-                << " = " << v << " in " << d.name().c_str() << " is out of"
-                << " range [0, 1]" << exit(FatalIOError);
-        }
-    }
+    auto unitInterval = [](const scalar v) { return v >= 0 && v <= 1; };
+    getCheckedOrDefault<scalar>
+    (
+        d, "e", 0, unitInterval, " [0, 1]", " (restitution coefficient)"
+    );
+    getCheckedOrDefault<scalar>
+    (
+        d, "mu", 0, unitInterval, " [0, 1]", " (friction)"
+    );
 }
 
 

@@ -5,6 +5,7 @@
 #include "ParticleHistory.H"
 #include "Pstream.H"
 #include "ListOps.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -42,21 +43,21 @@ Foam::ParticleHistory<CloudType>::ParticleHistory
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    interval_(this->coeffDict().template lookupOrDefault<label>("interval", 1)),
+    interval_
+    (
+        getCheckedOrDefault<label>
+        (
+            this->coeffDict(), "interval", 1,
+            [](const label n) { return n >= 1; },
+            ": it must be >= 1"
+        )
+    ),
     maxOrigId_
     (
         this->coeffDict().template lookupOrDefault<label>("maxOrigId", -1)
     ),
     filePtr_()
-{
-    if (interval_ < 1)
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry interval = " << interval_
-            << " is out of range: it must be >= 1"
-            << exit(FatalIOError);
-    }
-}
+{}
 
 
 template<class CloudType>

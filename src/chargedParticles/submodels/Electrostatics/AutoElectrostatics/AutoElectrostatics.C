@@ -4,6 +4,7 @@
 
 #include "AutoElectrostatics.H"
 #include "ElectrostaticsSurvey.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -116,10 +117,12 @@ Foam::AutoElectrostatics<CloudType>::AutoElectrostatics
     ElectrostaticsModel<CloudType>(dict, owner, typeName),
     recheckInterval_
     (
-        this->coeffDict().template lookupOrDefault<label>
+        getCheckedOrDefault<label>
         (
-            "recheckInterval",
-            0
+            this->coeffDict(), "recheckInterval", 0,
+            [](const label n) { return n >= 0; },
+            ": it must be >= 0 (evaluations between measurements; 0: choose"
+            " once)"
         )
     ),
     sinceChoice_(0),
@@ -127,14 +130,6 @@ Foam::AutoElectrostatics<CloudType>::AutoElectrostatics
     rungName_(),
     rungError_(-1)
 {
-    if (recheckInterval_ < 0)
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry recheckInterval = " << recheckInterval_ << " in "
-            << this->coeffDict().name().c_str() << " must be >= 0"
-            << " (evaluations between measurements; 0: choose once)"
-            << exit(FatalIOError);
-    }
     // The survey's entries are checked now, not at the first step
     ElectrostaticsSurvey<CloudType>(owner, this->coeffDict());
     Info<< "    The cheapest far-field rung within the accuracy, measured"

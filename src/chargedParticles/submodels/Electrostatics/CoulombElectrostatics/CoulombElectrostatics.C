@@ -8,6 +8,7 @@
 #include "ListListOps.H"
 #include "Pstream.H"
 #include "inputLimits.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -17,18 +18,16 @@ Foam::scalar Foam::CoulombElectrostatics<CloudType>::readEpsilonR
     const dictionary& coeffs
 )
 {
-    const scalar epsilonR = coeffs.lookupOrDefault<scalar>("epsilonR", 1);
     // A medium's permittivity is at least the vacuum's (the near-field
     // kernels, e.g. BEM, take it so)
-    if (!(epsilonR >= 1 && epsilonR <= inputLimits::large))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry epsilonR (relative permittivity of the medium) = "
-            << epsilonR << " is out of range: it must be finite and >= 1"
-            << " (1: vacuum), at most " << inputLimits::large
-            << exit(FatalIOError);
-    }
-    return epsilonR;
+    return getCheckedOrDefault<scalar>
+    (
+        coeffs, "epsilonR", 1,
+        [](const scalar e) { return e >= 1 && e <= inputLimits::large; },
+        ": it must be finite and >= 1 (1: vacuum), at most "
+      + Foam::name(inputLimits::large),
+        " (relative permittivity of the medium)"
+    );
 }
 
 

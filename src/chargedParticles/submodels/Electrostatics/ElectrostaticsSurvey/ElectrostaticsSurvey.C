@@ -19,6 +19,7 @@
 #include "ListListOps.H"
 #include "Tuple2.H"
 #include "OStringStream.H"
+#include "checkedEntry.H"
 #include <cstdio>
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
@@ -45,31 +46,24 @@ void Foam::ElectrostaticsSurvey<CloudType>::readControls
     const dictionary& dict
 )
 {
-    accuracy_ = dict.lookupOrDefault<scalar>("accuracy", 0.05);
-    if (!(accuracy_ > 0 && accuracy_ < 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry accuracy = " << accuracy_ << " in "
-            << dict.name().c_str() << " is out of range: the rms force"
-            << " error a rung must meet, in (0, 1), e.g. 0.05"
-            << exit(FatalIOError);
-    }
-    sampleSize_ = dict.lookupOrDefault<label>("sampleSize", 1000);
-    if (sampleSize_ < 10)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry sampleSize = " << sampleSize_ << " in "
-            << dict.name().c_str() << " must be >= 10 (parcels compared)"
-            << exit(FatalIOError);
-    }
-    repeats_ = dict.lookupOrDefault<label>("repeats", 3);
-    if (repeats_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry repeats = " << repeats_ << " in " << dict.name().c_str()
-            << " must be >= 1 (timed evaluations per rung)"
-            << exit(FatalIOError);
-    }
+    accuracy_ = getCheckedOrDefault<scalar>
+    (
+        dict, "accuracy", 0.05,
+        [](const scalar a) { return a > 0 && a < 1; },
+        ": the rms force error a rung must meet, in (0, 1), e.g. 0.05"
+    );
+    sampleSize_ = getCheckedOrDefault<label>
+    (
+        dict, "sampleSize", 1000,
+        [](const label n) { return n >= 10; },
+        ": it must be >= 10 (parcels compared)"
+    );
+    repeats_ = getCheckedOrDefault<label>
+    (
+        dict, "repeats", 3,
+        [](const label n) { return n >= 1; },
+        ": it must be >= 1 (timed evaluations per rung)"
+    );
 }
 
 

@@ -7,6 +7,7 @@
 #include "wordRes.H"
 #include "unitConversion.H"
 #include "facePlanes.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -94,23 +95,18 @@ Foam::groundedPlanes Foam::ImageCoulomb<CloudType>::wallPlanes
 {
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
 
-    const scalar featureAngle =
-        coeffs.lookupOrDefault<scalar>("featureAngle", 30);
-    if (!(featureAngle > 0 && featureAngle < 90))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry featureAngle [deg] in " << coeffs.name().c_str()
-            << " is " << featureAngle << ": it must be in (0, 90)"
-            << exit(FatalIOError);
-    }
-    const scalar tol = coeffs.lookupOrDefault<scalar>("planeTolerance", 1e-6);
-    if (!(tol > 0 && tol < 1e-2))
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry planeTolerance in " << coeffs.name().c_str()
-            << " is " << tol << ": it must be in (0, 1e-2)"
-            << exit(FatalIOError);
-    }
+    const scalar featureAngle = getCheckedOrDefault<scalar>
+    (
+        coeffs, "featureAngle", 30,
+        [](const scalar a) { return a > 0 && a < 90; },
+        " (0, 90)", " [deg]"
+    );
+    const scalar tol = getCheckedOrDefault<scalar>
+    (
+        coeffs, "planeTolerance", 1e-6,
+        [](const scalar t) { return t > 0 && t < 1e-2; },
+        " (0, 1e-2)"
+    );
 
     const labelList ids(groundedPatches(coeffs, pbm));
 

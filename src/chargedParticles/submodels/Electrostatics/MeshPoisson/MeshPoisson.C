@@ -4,6 +4,7 @@
 
 #include "MeshPoisson.H"
 #include "inputLimits.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -15,21 +16,26 @@ const Foam::dictionary& Foam::MeshPoisson<CloudType>::checkedCoeffs
 )
 {
     const scalar diagonal = mag(mesh.bounds().span());
+    const std::string range
+    (
+        ": it must be finite and > 0, in [" + Foam::name(inputLimits::sizeMin)
+      + ", " + Foam::name(diagonal) + "] m (1 nm to the diagonal of the"
+        " mesh's bounding box)"
+    );
     for (const word key : {"radius", "rCut"})
     {
-        scalar r = 0;
-        if
-        (
-            coeffs.readIfPresent(key, r)
-         && !(r >= inputLimits::sizeMin && r <= diagonal)
-        )
+        // Only where given: meshPoisson reports a missing one
+        if (coeffs.found(key))
         {
-            FatalIOErrorInFunction(coeffs)
-                << "Entry " << key << " = " << r << " in "
-                << coeffs.name().c_str() << " is out of range: it must be"
-                << " finite and > 0, in [" << inputLimits::sizeMin << ", "
-                << diagonal << "] m (1 nm to the diagonal of the mesh's"
-                << " bounding box)" << exit(FatalIOError);
+            getChecked<scalar>
+            (
+                coeffs, key,
+                [diagonal](const scalar r)
+                {
+                    return r >= inputLimits::sizeMin && r <= diagonal;
+                },
+                range
+            );
         }
     }
     return coeffs;

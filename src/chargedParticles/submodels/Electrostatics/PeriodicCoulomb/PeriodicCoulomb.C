@@ -5,6 +5,7 @@
 #include "PeriodicCoulomb.H"
 #include "cyclicPolyPatch.H"
 #include "processorHalo.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -108,14 +109,12 @@ Foam::label Foam::PeriodicCoulomb<CloudType>::readPotentialInterval
     const dictionary& coeffs
 )
 {
-    const label n = coeffs.getOrDefault<label>("potentialInterval", 0);
-    if (n < 0)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry potentialInterval = " << n << " is out of range"
-            << " [0, inf) (0: no potential statistics)" << exit(FatalIOError);
-    }
-    return n;
+    return getCheckedOrDefault<label>
+    (
+        coeffs, "potentialInterval", 0,
+        [](const label n) { return n >= 0; },
+        " [0, inf) (0: no potential statistics)"
+    );
 }
 
 

@@ -4,6 +4,7 @@
 
 #include "OscillatingFrameForce.H"
 #include "mathematicalConstants.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -16,25 +17,26 @@ Foam::OscillatingFrameForce<CloudType>::OscillatingFrameForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    amplitude_(this->coeffs().template get<vector>("amplitude")),
-    frequency_(this->coeffs().template get<scalar>("frequency")),
+    amplitude_
+    (
+        getChecked<vector>
+        (
+            this->coeffs(), "amplitude",
+            [](const vector& a) { return std::isfinite(mag(a)); },
+            ": it must be finite [m]"
+        )
+    ),
+    frequency_
+    (
+        getChecked<scalar>
+        (
+            this->coeffs(), "frequency",
+            [](const scalar f) { return f > 0 && std::isfinite(f); },
+            ": it must be finite and > 0 [Hz]"
+        )
+    ),
     acceleration_(Zero)
 {
-    if (!(frequency_ > 0) || !std::isfinite(frequency_))
-    {
-        FatalIOErrorInFunction(this->coeffs())
-            << "Entry frequency = " << frequency_
-            << " is out of range: it must be finite and > 0 [Hz]"
-            << exit(FatalIOError);
-    }
-    if (!std::isfinite(mag(amplitude_)))
-    {
-        FatalIOErrorInFunction(this->coeffs())
-            << "Entry amplitude = " << amplitude_
-            << " is out of range: it must be finite [m]"
-            << exit(FatalIOError);
-    }
-
     const scalar dt = mesh.time().deltaTValue();
     Info<< "    Oscillating frame: amplitude " << amplitude_ << " m, "
         << frequency_ << " Hz, peak acceleration "

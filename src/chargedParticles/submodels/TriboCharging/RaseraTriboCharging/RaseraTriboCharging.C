@@ -7,6 +7,7 @@
 #include "wallPolyPatch.H"
 #include "mathematicalConstants.H"
 #include "processorHalo.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -24,26 +25,20 @@ Foam::scalar Foam::RaseraTriboCharging<CloudType>::get
             << "Entry " << key << " is missing in " << d.name().c_str()
             << exit(FatalIOError);
     }
-    const scalar v = d.get<scalar>(key);
-    if
+    return getChecked<scalar>
     (
-        !std::isfinite(v)
-     || (positive && !(v >= 0 && v <= inputLimits::large))
-    )
-    {
-        const std::string range
-        (
-            positive
-          ? "it must be finite and >= 0, at most "
-          + Foam::name(inputLimits::large)
-          : "it must be finite"
-        );
-        FatalIOErrorInFunction(d)
-            << "Entry " << key << " = " << v << " in "
-            << d.name().c_str() << " is out of range: " << range.c_str()
-            << exit(FatalIOError);
-    }
-    return v;
+        d, key,
+        [positive](const scalar v)
+        {
+            return
+                std::isfinite(v)
+             && (!positive || (v >= 0 && v <= inputLimits::large));
+        },
+        positive
+      ? ": it must be finite and >= 0, at most "
+      + Foam::name(inputLimits::large)
+      : ": it must be finite"
+    );
 }
 
 
@@ -449,20 +444,17 @@ Foam::RaseraTriboCharging<CloudType>::RaseraTriboCharging
     ),
     balanceInterval_
     (
-        this->coeffDict().template lookupOrDefault<label>("balanceInterval", 1)
+        getCheckedOrDefault<label>
+        (
+            this->coeffDict(), "balanceInterval", 1,
+            [](const label n) { return n >= 1; },
+            ": it must be >= 1 (time steps)"
+        )
     ),
     filePtr_(),
     dq_()
 {
     read(fromWorkFunctions);
-
-    if (balanceInterval_ < 1)
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "Entry balanceInterval = " << balanceInterval_
-            << " is out of range: it must be >= 1 (time steps)"
-            << exit(FatalIOError);
-    }
 
     // Wall charges of the run this one continues
     scalarField q0;

@@ -12,6 +12,7 @@
 #include "cyclicPolyPatch.H"
 #include "ListListOps.H"
 #include "mathematicalConstants.H"
+#include "checkedEntry.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -55,25 +56,18 @@ Foam::SceneCheck<CloudType>::SceneCheck
 {
     const dictionary& dict = cloudDict.subOrEmptyDict("sceneCheck");
     active_ = dict.getOrDefault<bool>("active", true);
-    recheckInterval_ = dict.getOrDefault<label>("recheckInterval", 0);
-    breakdownField_ = dict.getOrDefault<scalar>("breakdownField", 3e6);
-
-    if (recheckInterval_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry recheckInterval = " << recheckInterval_ << " in "
-            << dict.name().c_str() << " is out of range: steps between scene"
-            << " checks, >= 0 (0: at the first step only)"
-            << exit(FatalIOError);
-    }
-    if (!(breakdownField_ > 0) || !std::isfinite(breakdownField_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry breakdownField = " << breakdownField_ << " in "
-            << dict.name().c_str() << " is out of range: the breakdown"
-            << " field of the medium [V/m], finite and > 0 (air: 3e6)"
-            << exit(FatalIOError);
-    }
+    recheckInterval_ = getCheckedOrDefault<label>
+    (
+        dict, "recheckInterval", 0,
+        [](const label n) { return n >= 0; },
+        ": steps between scene checks, >= 0 (0: at the first step only)"
+    );
+    breakdownField_ = getCheckedOrDefault<scalar>
+    (
+        dict, "breakdownField", 3e6,
+        [](const scalar E) { return E > 0 && std::isfinite(E); },
+        ": the breakdown field of the medium [V/m], finite and > 0 (air: 3e6)"
+    );
 }
 
 

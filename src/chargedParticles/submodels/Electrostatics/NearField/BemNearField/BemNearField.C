@@ -647,16 +647,46 @@ Foam::BemNearField<CloudType>::BemNearField
 :
     NearFieldModel<CloudType>(dict, owner),
     dipoles_(dict, owner, 4),
-    clusterGap_(dict.template lookupOrDefault<scalar>("clusterGap", 1)),
-    nPatches_(dict.template lookupOrDefault<label>("nPatches", 1200)),
+    clusterGap_
+    (
+        getCheckedOrDefault<scalar>
+        (
+            dict, "clusterGap", 1,
+            [](const scalar g) { return g >= 0 && std::isfinite(g); },
+            ": finite and >= 0 (in units of the smaller semi-axis of a pair)"
+        )
+    ),
+    nPatches_
+    (
+        getCheckedOrDefault<label>
+        (
+            dict, "nPatches", 1200,
+            [](const label n) { return n >= 8; },
+            ": >= 8 (patches per parcel)"
+        )
+    ),
     isolated_
     (
         dict.template lookupOrDefault<word>("isolated", "inducedDipole")
     ),
-    solveInterval_(dict.template lookupOrDefault<label>("solveInterval", 1)),
+    solveInterval_
+    (
+        getCheckedOrDefault<label>
+        (
+            dict, "solveInterval", 1,
+            [](const label n) { return n >= 1; },
+            ": >= 1 (time steps between BEM solves)"
+        )
+    ),
+    // Given in MB, finite in bytes as well
     meshCacheBytes_
     (
-        1048576*dict.template lookupOrDefault<scalar>("meshCache", 2000)
+        1048576*getCheckedOrDefault<scalar>
+        (
+            dict, "meshCache", 2000,
+            [](const scalar mb) { return mb > 0 && std::isfinite(1048576*mb); },
+            ": > 0 (MB of meshes and factorised blocks kept per processor)"
+        )
     ),
     multipoleNeighbours_
     (
@@ -685,36 +715,6 @@ Foam::BemNearField<CloudType>::BemNearField
     remeshOffset_(0),
     stateRead_(false)
 {
-    if (!(clusterGap_ >= 0) || !std::isfinite(clusterGap_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry clusterGap = " << clusterGap_ << " in "
-            << dict.name().c_str() << " is out of range: finite and >= 0"
-            << " (in units of the smaller semi-axis of a pair)"
-            << exit(FatalIOError);
-    }
-    if (nPatches_ < 8)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry nPatches = " << nPatches_ << " in "
-            << dict.name().c_str() << " is out of range: >= 8 (patches per"
-            << " parcel)" << exit(FatalIOError);
-    }
-    if (solveInterval_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry solveInterval = " << solveInterval_ << " in "
-            << dict.name().c_str() << " is out of range: >= 1 (time steps"
-            << " between BEM solves)" << exit(FatalIOError);
-    }
-    if (!(meshCacheBytes_ > 0) || !std::isfinite(meshCacheBytes_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry meshCache = " << meshCacheBytes_/1048576 << " in "
-            << dict.name().c_str() << " is out of range: > 0 (MB of meshes"
-            << " and factorised blocks kept per processor)"
-            << exit(FatalIOError);
-    }
     const word neighbours
     (
         dict.template lookupOrDefault<word>("neighbours", "multipoles")

@@ -8,6 +8,7 @@
 #include "Pstream.H"
 #include "processorHalo.H"
 #include "keyedPoints.H"
+#include "checkedEntry.H"
 
 #include <algorithm>
 #include <memory>
@@ -50,36 +51,12 @@ Foam::scalar Foam::InducedDipoleNearField<CloudType>::readPositive
     const scalar deflt
 ) const
 {
-    const scalar v = this->dict().template lookupOrDefault<scalar>(key, deflt);
-    if (!(v > 0) || !std::isfinite(v))
-    {
-        FatalIOErrorInFunction(this->dict())
-            << "Entry " << key << " = " << v << " in "
-            << this->dict().name().c_str() << " is out of range: it must"
-            << " be finite and > 0" << exit(FatalIOError);
-    }
-    return v;
-}
-
-
-template<class CloudType>
-Foam::label Foam::InducedDipoleNearField<CloudType>::readLabel
-(
-    const word& key,
-    const label deflt,
-    const label lo
-) const
-{
-    // A label: a count given as 0.5 is an error, not truncated to 0
-    const label v = this->dict().template lookupOrDefault<label>(key, deflt);
-    if (v < lo)
-    {
-        FatalIOErrorInFunction(this->dict())
-            << "Entry " << key << " = " << v << " in "
-            << this->dict().name().c_str() << " is out of range: >= " << lo
-            << exit(FatalIOError);
-    }
-    return v;
+    return getCheckedOrDefault<scalar>
+    (
+        this->dict(), key, deflt,
+        [](const scalar v) { return v > 0 && std::isfinite(v); },
+        ": it must be finite and > 0"
+    );
 }
 
 
@@ -97,7 +74,16 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
     rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
     rNearDiameters_(rNearDiameters),
     tolerance_(readPositive("tolerance", 1e-8)),
-    maxIter_(readLabel("maxIter", 500, 1)),
+    // A label: a count given as 0.5 is an error, not truncated to 0
+    maxIter_
+    (
+        getCheckedOrDefault<label>
+        (
+            this->dict(), "maxIter", 500,
+            [](const label n) { return n >= 1; },
+            ": >= 1"
+        )
+    ),
     contactWeight_
     (
         Foam::pow(owner.constProps().stiffnessRatio(), 0.4)
