@@ -31,8 +31,8 @@ def write_doc(path, res, table, quick=False, regenerated=False):
     add(cmd)
     add("```")
     add("")
-    add(f"(`Allrun` takes about 7 min on this machine. `Allrun -quick`, with N = {ph_quick_n()} spheres "
-        f"and 500 ellipsoids, takes about 3 min; it checks the machinery and writes no doc.)")
+    add(f"(The run below took {res['totalSeconds']/60:.0f} min. `Allrun -quick`, with N = {ph_quick_n()} "
+        f"spheres and 500 ellipsoids, takes a few minutes; it checks the machinery and writes no doc.)")
     add(f"The results are from `{cmd}` started on {m['date']} (mode `{res['mode']}`, "
         f"total {res['totalSeconds']/60:.1f} min)"
         + (f"; this file was rewritten from them by `{cmd} -report`." if regenerated else "."))
@@ -168,7 +168,8 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         add("  timed. The window restarts from it at the spheres' time step. The ellipsoids have more")
         add("  contacts per particle than the spheres (sanity table), so the cost is also given per")
         add("  contact: loop time / (steps x contacts), contacts = particle-particle pairs + wall")
-        add("  contacts of the last step.")
+        add("  contacts of the last step. The ellipsoid window runs several times, each in turn with a")
+        add("  cfSpheres window (the first sphere case again): the ratios are the median of these pairs.")
     add("- **Timing.** OpenFOAM solvers: the difference of `ExecutionTime` (process CPU time) printed")
     add("  after step 1 and after step M-1 of the M-step window, over M-2 steps. The last step, which")
     add("  writes the final state, and the start-up are excluded. LIGGGHTS: its `Loop time` is wall")

@@ -1324,7 +1324,7 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     // parcels of the accepted ranges, inputLimits.H, overflow it)
     scalar minTcArg = VGREAT;
     scalar minLogTcArg = VGREAT;
-    scalar minRayleighSqr = VGREAT;
+    scalar minRayleighSqr = sqr(GREAT);
 
     // Per material: E* of two of its parcels, and the square of the
     // Rayleigh step's sqrt(G) (0.8766 + 0.163 nu)
