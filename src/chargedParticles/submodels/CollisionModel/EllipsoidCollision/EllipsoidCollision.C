@@ -1347,9 +1347,9 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
         const scalar mStar = 0.5*p.mass();
         const scalar v = max(2*mag(p.U()), VSMALL);
 
-        const scalar mByE = mStar/Estar[material];
-        const scalar arg = normal(mByE) ? mByE*mByE/(0.5*Rtip)/v : 0;
-        if (normal(mByE*mByE) && normal(arg))
+        const scalar mByE2 = sqr(mStar/Estar[material]);
+        const scalar arg = mByE2/(0.5*Rtip)/v;
+        if (normal(mByE2) && normal(arg))
         {
             minTcArg = min(minTcArg, arg);
         }
