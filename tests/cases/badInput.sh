@@ -312,6 +312,10 @@ badCase negativeTrackingTolerance 'maxCo +0.3;' 'maxCo 0.3; trackingTolerance -1
     'Entry trackingTolerance = -0.001 in .* is out of range \[0, 0.5\]'
 badCase zeroLogInterval 'maxCo +0.3;' 'maxCo 0.3; logInterval 0;' \
     'Entry logInterval = 0 in .* is out of range: >= 1'
+badCase negativeSortInterval 'maxCo +0.3;' 'maxCo 0.3; sortInterval -1;' \
+    'Entry sortInterval = -1 in .* is out of range: it must be >= 0'
+badCase negativeSortMinParcels 'maxCo +0.3;' 'maxCo 0.3; sortMinParcels -5;' \
+    'Entry sortMinParcels = -5 in .* is out of range: it must be >= 0'
 badCase unknownMomentumCoupling 'maxCo +0.3;' 'maxCo 0.3; momentumCoupling implicit;' \
     'Entry momentumCoupling = implicit is not one of: conservativeImplicit'
 # Several materials: an unknown material, an unlike pair without Gamma,

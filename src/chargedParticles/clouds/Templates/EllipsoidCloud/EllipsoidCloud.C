@@ -18,6 +18,8 @@
 #include "cutoffPairs.H"
 #include "ellipsoidContact.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
@@ -73,6 +75,64 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     cloud.calculateForces();
 
     inPlace(parcelType::trackingData::tpVelocityHalfStep);
+}
+
+
+template<class CloudType>
+Foam::label Foam::EllipsoidCloud<CloudType>::nInjected() const
+{
+    if (checkAllInjected_)
+    {
+        return this->size();
+    }
+    label n = 0;
+    for
+    (
+        const parcelType* p = this->last();
+        p && p->age() == 0;
+        p = p == this->first() ? nullptr
+          : static_cast<const parcelType*>(p->prev_)
+    )
+    {
+        ++n;
+    }
+    return n;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::sortParcels()
+{
+    DynamicList<parcelType*> order(this->size());
+    for (parcelType& p : *this)
+    {
+        order.append(&p);
+    }
+    auto byCell = [](const parcelType* a, const parcelType* b)
+    {
+        return a->cell() < b->cell();
+    };
+    if (std::is_sorted(order.begin(), order.end(), byCell))
+    {
+        return;
+    }
+    std::stable_sort(order.begin(), order.end(), byCell);
+
+    // All copies before the originals are freed: allocated together
+    List<parcelType*> copies(order.size());
+    forAll(order, i)
+    {
+        copies[i] = new parcelType(*order[i]);
+    }
+    for (parcelType* p : order)
+    {
+        this->deleteParticle(*p);
+    }
+    for (parcelType* p : copies)
+    {
+        this->addParticle(p);
+    }
+    this->updateCellOccupancy();
 }
 
 
@@ -407,6 +467,20 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
         " into another, as a fraction of the pair's smallest semi-axis;"
         " default 0)"
     );
+    sortInterval_ = getCheckedOrDefault<label>
+    (
+        solDict, "sortInterval", 1000,
+        [](const label n) { return n >= 0; },
+        ": it must be >= 0 (time steps between sorts of the parcels by"
+        " cell; 0: never; default 1000)"
+    );
+    sortMinParcels_ = getCheckedOrDefault<label>
+    (
+        solDict, "sortMinParcels", 5000,
+        [](const label n) { return n >= 0; },
+        ": it must be >= 0 (the fewest parcels of a processor that are"
+        " sorted by cell; default 5000)"
+    );
     enum class momentumCoupling { sourceTerms, conservativeImplicit };
     static const Enum<momentumCoupling> couplings
     ({
@@ -517,7 +591,10 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     trackBeforeForces_(false),
     contactTime_(0),
     maxInjectionOverlap_(0),
-    conservativeCoupling_(false)
+    conservativeCoupling_(false),
+    sortInterval_(0),
+    sortMinParcels_(0),
+    checkAllInjected_(true)
 {
     if (this->solution().active())
     {
@@ -548,7 +625,10 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     kickInMove_(false),
     trackBeforeForces_(false),
     contactTime_(0),
-    conservativeCoupling_(c.conservativeCoupling_)
+    conservativeCoupling_(c.conservativeCoupling_),
+    sortInterval_(c.sortInterval_),
+    sortMinParcels_(c.sortMinParcels_),
+    checkAllInjected_(true)
 {}
 
 
@@ -567,7 +647,10 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     kickInMove_(false),
     trackBeforeForces_(false),
     contactTime_(0),
-    conservativeCoupling_(c.conservativeCoupling_)
+    conservativeCoupling_(c.conservativeCoupling_),
+    sortInterval_(c.sortInterval_),
+    sortMinParcels_(c.sortMinParcels_),
+    checkAllInjected_(true)
 {}
 
 
@@ -774,37 +857,43 @@ void Foam::EllipsoidCloud<CloudType>::motion
     // OpenFOAM's injection models set nParticle after checkParcelProperties
     // (from their entry nParticle, or the mass and basis): a non-finite one,
     // or one whose particles fill more than the mesh's bounding box, would
-    // reach the cloud's sums and the carrier's sources
-    const vector span(this->mesh().bounds().span());
-    const scalar bbVolume = span.x()*span.y()*span.z();
-    for (const parcelType& p : *this)
+    // reach the cloud's sums and the carrier's sources. Checked in steps
+    // that injected parcels (most inject none)
+    if (nInjected() > 0)
     {
-        if (!(p.nParticle() > 0 && p.nParticle()*p.volume() <= bbVolume))
+        const vector span(this->mesh().bounds().span());
+        const scalar bbVolume = span.x()*span.y()*span.z();
+        for (const parcelType& p : *this)
         {
-            const dictionary& inj =
-                this->subModelProperties().subDict("injectionModels");
-            FatalIOErrorInFunction(inj)
-                << "A parcel (origProc " << p.origProc() << ", origId "
-                << p.origId() << ") of the injection models " << inj.toc()
-                << " carries nParticle = " << p.nParticle() << " particles"
-                << " of " << p.volume() << " m3: out of range, it must be"
-                << " finite and > 0, the particles' volume at most the mesh's"
-                << " bounding box, " << bbVolume << " m3: check the entries"
-                << " nParticle, massTotal and parcelBasisType in "
-                << inj.name().c_str() << exit(FatalIOError);
+            if (!(p.nParticle() > 0 && p.nParticle()*p.volume() <= bbVolume))
+            {
+                const dictionary& inj =
+                    this->subModelProperties().subDict("injectionModels");
+                FatalIOErrorInFunction(inj)
+                    << "A parcel (origProc " << p.origProc() << ", origId "
+                    << p.origId() << ") of the injection models "
+                    << inj.toc() << " carries nParticle = " << p.nParticle()
+                    << " particles of " << p.volume() << " m3: out of range,"
+                    << " it must be finite and > 0, the particles' volume at"
+                    << " most the mesh's bounding box, " << bbVolume
+                    << " m3: check the entries nParticle, massTotal and"
+                    << " parcelBasisType in " << inj.name().c_str()
+                    << exit(FatalIOError);
+            }
+        }
+
+        if (this->collision().active())
+        {
+            checkInjectionOverlaps();
         }
     }
-
-    if (this->collision().active())
-    {
-        checkInjectionOverlaps();
-    }
-
-    const label nSubCycles = this->collision().nSubCycles();
+    checkAllInjected_ = false;
 
     // Lazy tracking: the written positions are the tracked ones, tracked
     // in the last move of the step, before its forces (moveCollide)
     const bool writeStep = this->db().time().writeTime();
+
+    const label nSubCycles = this->collision().nSubCycles();
 
     if (nSubCycles > 1)
     {
@@ -831,6 +920,19 @@ void Foam::EllipsoidCloud<CloudType>::motion
         trackBeforeForces_ = writeStep;
         moveCollide(cloud, td, this->db().time().deltaTValue());
         trackBeforeForces_ = false;
+    }
+
+    // Sorted after the step (the first, then every sortInterval-th) and
+    // in write steps: the written parcels are in the order of their cells,
+    // which a restart reads, as the uninterrupted run has it (same sums)
+    if
+    (
+        sortInterval_ > 0
+     && this->size() >= sortMinParcels_
+     && (writeStep || (this->db().time().timeIndex() - 1) % sortInterval_ == 0)
+    )
+    {
+        sortParcels();
     }
 
     // Ready for the next injection (see evolve)
