@@ -676,7 +676,14 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     dissipatedEnergy_ += energyWeight*rolled;
 
     // Torques about the centroids (Ruan Eq. 40), and the elastic force and
-    // torques of the change of R (-dUdR gradR, see Description)
+    // torques of the change of R (-dUdR gradR, see Description; zero for
+    // two spheres)
+    if (A.sphere && B.sphere)
+    {
+        torqueA += ((xc - xA) ^ F) + Mr;
+        torqueB -= ((xc - xB) ^ F) + Mr;
+        return F;
+    }
     torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
     torqueB -= ((xc - xB) ^ F) + Mr + dUdR*c.gradR.rotation2;
     return F - dUdR*c.gradR.centre1;
@@ -700,15 +707,24 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             // Apart, the pair's tracked direction is forgotten: it then
             // depends only on the pair's own history since it came within
             // reach, not on when the list was built
+            const bool spheres = A.sphere && B.sphere;
             if (magSqr(xA - xB) > sqr(A.radius + B.radius))
             {
                 histories_.setTouching(k, false);
-                histories_.direction(k) = Zero;
-                histories_.directionChange(k) = Zero;
+                if (!spheres)
+                {
+                    histories_.direction(k) = Zero;
+                    histories_.directionChange(k) = Zero;
+                }
                 continue;
             }
+
+            // Two spheres: the analytic contact (pairGeometry's, without
+            // the tracked direction, which spheres do not use)
             const ellipsoidContact::result c =
-                listPairGeometry(k, A, xA, B, xB);
+                spheres
+              ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
+              : listPairGeometry(k, A, xA, B, xB);
             if (!c.contact || c.overlap <= 0)
             {
                 histories_.setTouching(k, false);
