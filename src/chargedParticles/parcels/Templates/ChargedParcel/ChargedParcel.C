@@ -47,7 +47,7 @@ Foam::ChargedParcel<ParcelType>::ChargedParcel
 
 template<class ParcelType>
 template<class TrackCloudType>
-void Foam::ChargedParcel<ParcelType>::checkFinite
+void Foam::ChargedParcel<ParcelType>::stopNotFinite
 (
     const TrackCloudType& cloud,
     const bool afterMove
