@@ -81,7 +81,8 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 template<class CloudType>
 Foam::label Foam::EllipsoidCloud<CloudType>::nInjected() const
 {
-    if (checkAllInjected_)
+    // (last() of an empty list is an error)
+    if (checkAllInjected_ || this->size() == 0)
     {
         return this->size();
     }
