@@ -79,14 +79,19 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
 
 template<class CloudType>
-Foam::label Foam::EllipsoidCloud<CloudType>::nInjected() const
+const typename Foam::EllipsoidCloud<CloudType>::parcelType*
+Foam::EllipsoidCloud<CloudType>::firstInjected() const
 {
-    // (last() of an empty list is an error)
-    if (checkAllInjected_ || this->size() == 0)
+    // (first() and last() of an empty list are errors)
+    if (this->size() == 0)
     {
-        return this->size();
+        return nullptr;
     }
-    label n = 0;
+    if (checkAllInjected_)
+    {
+        return this->first();
+    }
+    const parcelType* first = nullptr;
     for
     (
         const parcelType* p = this->last();
@@ -95,9 +100,9 @@ Foam::label Foam::EllipsoidCloud<CloudType>::nInjected() const
           : static_cast<const parcelType*>(p->prev_)
     )
     {
-        ++n;
+        first = p;
     }
-    return n;
+    return first;
 }
 
 
@@ -172,22 +177,8 @@ Foam::scalar Foam::EllipsoidCloud<CloudType>::bodyOverlap
 template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::checkInjectionOverlaps() const
 {
-    // The parcels injected this step have not moved yet (age 0); most
-    // steps inject none: no positions gathered then
-    bool anyNew = false;
-    for (const parcelType& p : *this)
-    {
-        if (p.age() == 0)
-        {
-            anyNew = true;
-            break;
-        }
-    }
-    if (!anyNew)
-    {
-        return;
-    }
-
+    // The parcels injected this step have not moved yet (age 0); called
+    // only in steps that injected some (motion)
     DynamicList<point> xAll(this->size());
     DynamicList<const parcelType*> pAll(this->size());
     DynamicList<point> xNew;
@@ -860,12 +851,18 @@ void Foam::EllipsoidCloud<CloudType>::motion
     // or one whose particles fill more than the mesh's bounding box, would
     // reach the cloud's sums and the carrier's sources. Checked in steps
     // that injected parcels (most inject none)
-    if (nInjected() > 0)
+    if (const parcelType* injected = firstInjected())
     {
         const vector span(this->mesh().bounds().span());
         const scalar bbVolume = span.x()*span.y()*span.z();
-        for (const parcelType& p : *this)
+        for
+        (
+            const parcelType* pp = injected;
+            ;
+            pp = static_cast<const parcelType*>(pp->next_)
+        )
         {
+            const parcelType& p = *pp;
             if (!(p.nParticle() > 0 && p.nParticle()*p.volume() <= bbVolume))
             {
                 const dictionary& inj =
@@ -880,6 +877,10 @@ void Foam::EllipsoidCloud<CloudType>::motion
                     << " m3: check the entries nParticle, massTotal and"
                     << " parcelBasisType in " << inj.name().c_str()
                     << exit(FatalIOError);
+            }
+            if (pp == this->last())
+            {
+                break;
             }
         }
 

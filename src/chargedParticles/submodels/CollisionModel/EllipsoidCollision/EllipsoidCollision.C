@@ -573,11 +573,13 @@ Foam::EllipsoidCollision<CloudType>::listPairGeometry
     const point& xB
 )
 {
-    vector& n = histories_.direction(k);
+    // Two spheres: the analytic contact (pairGeometry's for them, which
+    // spheres do not track a direction for)
     if (A.sphere && B.sphere)
     {
-        return pairGeometry(A, xA, B, xB, false, n);
+        return ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius);
     }
+    vector& n = histories_.direction(k);
 
     // A lasting contact's normal turns smoothly: started from its linear
     // extrapolation, Newton is within the square of the step's turn of the
@@ -678,14 +680,16 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     // Torques about the centroids (Ruan Eq. 40), and the elastic force and
     // torques of the change of R (-dUdR gradR, see Description; zero for
     // two spheres)
+    const vector MA = ((xc - xA) ^ F) + Mr;
+    const vector MB = ((xc - xB) ^ F) + Mr;
     if (A.sphere && B.sphere)
     {
-        torqueA += ((xc - xA) ^ F) + Mr;
-        torqueB -= ((xc - xB) ^ F) + Mr;
+        torqueA += MA;
+        torqueB -= MB;
         return F;
     }
-    torqueA += ((xc - xA) ^ F) + Mr - dUdR*c.gradR.rotation1;
-    torqueB -= ((xc - xB) ^ F) + Mr + dUdR*c.gradR.rotation2;
+    torqueA += MA - dUdR*c.gradR.rotation1;
+    torqueB -= MB + dUdR*c.gradR.rotation2;
     return F - dUdR*c.gradR.centre1;
 }
 
@@ -707,24 +711,18 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             // Apart, the pair's tracked direction is forgotten: it then
             // depends only on the pair's own history since it came within
             // reach, not on when the list was built
-            const bool spheres = A.sphere && B.sphere;
             if (magSqr(xA - xB) > sqr(A.radius + B.radius))
             {
                 histories_.setTouching(k, false);
-                if (!spheres)
+                if (!(A.sphere && B.sphere))
                 {
                     histories_.direction(k) = Zero;
                     histories_.directionChange(k) = Zero;
                 }
                 continue;
             }
-
-            // Two spheres: the analytic contact (pairGeometry's, without
-            // the tracked direction, which spheres do not use)
             const ellipsoidContact::result c =
-                spheres
-              ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
-              : listPairGeometry(k, A, xA, B, xB);
+                listPairGeometry(k, A, xA, B, xB);
             if (!c.contact || c.overlap <= 0)
             {
                 histories_.setTouching(k, false);
