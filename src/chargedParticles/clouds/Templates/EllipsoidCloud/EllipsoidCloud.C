@@ -17,6 +17,7 @@
 #include "OSspecific.H"
 #include "cutoffPairs.H"
 #include "ellipsoidContact.H"
+#include "GravityForce.H"
 
 #include <algorithm>
 
@@ -535,6 +536,43 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
 
 
 template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::setGravityOnly()
+{
+    // Exactly OpenFOAM's gravity (isType: a force derived from it may read
+    // more of the carrier). Only MPPIC clouds switch the force list's
+    // non-coupled forces off, not this cloud
+    typedef GravityForce<typename CloudType::kinematicCloudType> gravityType;
+
+    const typename CloudType::forceType& forces = this->forces();
+    gravityOnly_ =
+        !this->solution().coupled()
+     && !this->solution().cellValueSourceCorrection()
+     && !this->dispersion().active();
+    gravity_.setSize(forces.size());
+    forAll(forces, i)
+    {
+        if (isType<gravityType>(forces[i]))
+        {
+            gravity_[i] = refCast<const gravityType>(forces[i]).g();
+        }
+        else
+        {
+            gravityOnly_ = false;
+        }
+    }
+    if (gravityOnly_)
+    {
+        Info<< "    Carrier forces: gravity alone (the parcels' kick skips"
+            << " the force list)" << endl;
+    }
+    else
+    {
+        gravity_.clear();
+    }
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCloud<CloudType>::setLogAndTracking()
 {
     if
@@ -586,11 +624,13 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     conservativeCoupling_(false),
     sortInterval_(0),
     sortMinParcels_(0),
-    checkAllInjected_(true)
+    checkAllInjected_(true),
+    gravityOnly_(false)
 {
     if (this->solution().active())
     {
         readSolutionControls();
+        setGravityOnly();
     }
     setLogAndTracking();
 
@@ -620,7 +660,9 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     conservativeCoupling_(c.conservativeCoupling_),
     sortInterval_(c.sortInterval_),
     sortMinParcels_(c.sortMinParcels_),
-    checkAllInjected_(true)
+    checkAllInjected_(true),
+    gravityOnly_(c.gravityOnly_),
+    gravity_(c.gravity_)
 {}
 
 
@@ -642,7 +684,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     conservativeCoupling_(c.conservativeCoupling_),
     sortInterval_(c.sortInterval_),
     sortMinParcels_(c.sortMinParcels_),
-    checkAllInjected_(true)
+    checkAllInjected_(true),
+    gravityOnly_(false)
 {}
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "EllipsoidParcel.H"
+#include "meshTools.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -91,6 +92,89 @@ bool Foam::EllipsoidParcel<ParcelType>::move
         );
     }
     return keep;
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::EllipsoidParcel<ParcelType>::setCellValues
+(
+    TrackCloudType& cloud,
+    trackingData& td
+)
+{
+    if (!cloud.gravityOnly())
+    {
+        ParcelType::setCellValues(cloud, td);
+        return;
+    }
+
+    // KinematicParcel::setCellValues' density, limited as there; no force
+    // reads the carrier's velocity or viscosity
+    td.rhoc() =
+        td.rhoInterp().interpolate
+        (
+            this->coordinates(),
+            this->currentTetIndices()
+        );
+    if (td.rhoc() < cloud.constProps().rhoMin())
+    {
+        td.rhoc() = cloud.constProps().rhoMin();
+    }
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::EllipsoidParcel<ParcelType>::calcDispersion
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar dt
+)
+{
+    if (!cloud.gravityOnly())
+    {
+        ParcelType::calcDispersion(cloud, td, dt);
+    }
+}
+
+
+template<class ParcelType>
+template<class TrackCloudType>
+void Foam::EllipsoidParcel<ParcelType>::calc
+(
+    TrackCloudType& cloud,
+    trackingData& td,
+    const scalar dt
+)
+{
+    if (!cloud.gravityOnly())
+    {
+        ParcelType::calc(cloud, td, dt);
+        return;
+    }
+
+    // KinematicParcel::calc and calcVelocity (OpenFOAM v1912) with only
+    // gravity forces, uncoupled: Fcp = 0, so acp = (0 Uc + 0)/m = +0 and
+    // bcp = 0; massEff = m (gravity adds no mass); Fncp.Su is the sum of
+    // GravityForce::calcNonCoupled's m g (1 - rhoc/rho) from Zero. The
+    // same operations in the same order (the zero sums included: they turn
+    // -0 into +0), so the velocity is bit-identical to the force list's
+    const scalar m = this->mass();
+    vector FncpSu = Zero;
+    for (const vector& g : cloud.gravity())
+    {
+        FncpSu += m*g*(1.0 - td.rhoc()/this->rho());
+    }
+    const vector acp = Zero;
+    const vector ancp = (FncpSu + vector(Zero))/m;
+    vector Unew =
+        this->U() + cloud.UIntegrator().delta(this->U(), dt, acp + ancp, 0);
+
+    const polyMesh& mesh = cloud.pMesh();
+    meshTools::constrainDirection(mesh, mesh.solutionD(), Unew);
+    this->U() = Unew;
 }
 
 
