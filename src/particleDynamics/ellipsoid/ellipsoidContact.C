@@ -412,11 +412,11 @@ void newtonStep
 }
 
 
-// Damped Newton minimisation of g on the unit sphere from m0
+// Damped Newton minimisation of g on the unit sphere from the state s0
 depthFunction::state newtonOnSphere
 (
     const depthFunction& f,
-    const vector& m0,
+    const depthFunction::state& s0,
     const scalar L,
     label& iterations,
     bool& converged,
@@ -431,7 +431,7 @@ depthFunction::state newtonOnSphere
     const scalar maxStep = 0.5;     // trust radius [rad]
     const label maxIter = 60;
 
-    depthFunction::state s = f.eval(m0/mag(m0));
+    depthFunction::state s = s0;
     converged = false;
     iterations = 0;
 
@@ -563,20 +563,38 @@ certificate certifiedSingleStart
 )
 {
     const depthFunction f(e1, e2);
+
+    // Most tracked pairs within reach but apart are still separated along
+    // the last step's direction: one evaluation decides them (g > 0 where
+    // the centres coincide, so the order of the tests does not matter)
+    const bool tracked = magSqr(nTrack) > 0;
+    depthFunction::state s0;
+    if (tracked)
+    {
+        s0 = f.eval(nTrack/mag(nTrack));
+        if (s0.g < 0)
+        {
+            nTrack = s0.m;
+            return certificate::separated;
+        }
+    }
+
     const scalar dist = mag(f.d());
     if (!(dist > 0))
     {
         return certificate::undecided;
     }
     const scalar L = e1.boundingRadius() + e2.boundingRadius() + dist;
+    if (!tracked)
+    {
+        const vector m0 = f.d()/dist;
+        s0 = f.eval(m0/mag(m0));
+    }
 
     label iters = 0;
     bool conv = false;
     const depthFunction::state s =
-        newtonOnSphere
-        (
-            f, magSqr(nTrack) > 0 ? nTrack : f.d()/dist, L, iters, conv, true
-        );
+        newtonOnSphere(f, s0, L, iters, conv, true);
 
     if (s.g < 0)
     {
@@ -684,7 +702,10 @@ result robustCore
         label iters = 0;
         bool conv = false;
         const depthFunction::state s =
-            newtonOnSphere(f, starts[k], L, iters, conv);
+            newtonOnSphere
+            (
+                f, f.eval(starts[k]/mag(starts[k])), L, iters, conv
+            );
 
         const bool better =
             (conv && !bestConverged)
