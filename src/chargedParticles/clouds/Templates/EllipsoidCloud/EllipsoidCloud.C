@@ -32,20 +32,6 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     const scalar deltaT
 )
 {
-    // The last half kick does not move parcels through the mesh: a plain
-    // loop, not Cloud::move (whose tracking set-up and processor transfer
-    // exchange would be for nothing)
-    auto inPlace = [&](const typename parcelType::trackingData::trackPart part)
-    {
-        td.part() = part;
-        for (parcelType& p : *this)
-        {
-            td.keepParticle = true;
-            td.switchProcessor = false;
-            p.move(cloud, td, deltaT);
-        }
-    };
-
     cloud.initialiseForces();
 
     // The first half kick, the drift and the rotation in one pass
@@ -75,7 +61,17 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
 
     cloud.calculateForces();
 
-    inPlace(parcelType::trackingData::tpVelocityHalfStep);
+    // The last half kick does not move parcels through the mesh: a plain
+    // loop over the parcels' kicks, not Cloud::move (whose tracking set-up
+    // and processor transfer exchange would be for nothing) nor the
+    // parcels' moves (their layers' tests of the tracking part)
+    td.part() = parcelType::trackingData::tpVelocityHalfStep;
+    td.keepParticle = true;
+    td.switchProcessor = false;
+    for (parcelType& p : *this)
+    {
+        p.lastKick(cloud, deltaT);
+    }
 }
 
 
