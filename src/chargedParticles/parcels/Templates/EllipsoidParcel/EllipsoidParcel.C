@@ -55,9 +55,7 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     // the CollidingParcel's kick with the contact force and torque
     if (kicksInMove(cloud, td))
     {
-        td.part() = trackingData::tpVelocityHalfStep;
-        ParcelType::move(cloud, td, trackTime);
-        td.part() = trackingData::tpLinearTrack;
+        contactKick(trackTime);
     }
 
     // A parcel kicked to the speed of light has met forces beyond any
