@@ -315,13 +315,15 @@ void Foam::EllipsoidCollision<CloudType>::beginGather()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::cacheWallFaceBoxes()
 {
-    // Each boundary face's bounding box, and whether the face is that box
-    // (the mesh is static)
+    // Each boundary face's bounding box, unit normal and area, and whether
+    // the face is its box (the mesh is static)
     const polyMesh& mesh = this->owner().mesh();
     if (wallFaceBb_.size() != mesh.nBoundaryFaces())
     {
         wallFaceBb_.setSize(mesh.nBoundaryFaces());
         wallFaceIsBox_.setSize(mesh.nBoundaryFaces());
+        wallFaceNormal_.setSize(mesh.nBoundaryFaces());
+        wallFaceArea_.setSize(mesh.nBoundaryFaces());
         forAll(wallFaceBb_, bFacei)
         {
             const label facei = mesh.nInternalFaces() + bFacei;
@@ -332,6 +334,8 @@ void Foam::EllipsoidCollision<CloudType>::cacheWallFaceBoxes()
             // the other two directions is that box
             const vector& Sf = mesh.faceAreas()[facei];
             const scalar magSf = mag(Sf);
+            wallFaceNormal_[bFacei] = magSf > 0 ? Sf/magSf : vector(Zero);
+            wallFaceArea_[bFacei] = magSf;
             const vector span = bb.span();
             direction k = 0;
             for (direction d = 1; d < vector::nComponents; ++d)
@@ -937,6 +941,9 @@ template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 {
     const polyMesh& mesh = this->owner().mesh();
+    const faceList& faces = mesh.faces();
+    const pointField& points = mesh.points();
+    const vectorField& faceCentres = mesh.faceCentres();
     const labelListList& referredWallFaces = il_.rwfilInverse();
 
     // Contacts of one parcel (contact points on the walls) to keep
@@ -953,22 +960,25 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         const label i = allParcels ? m : wallParcels_[m];
         contactPoints.clear();
 
-        // Mesh face centres and areas are cached by the mesh
         for (label k = wallStart_[i]; k < wallStart_[i + 1]; ++k)
         {
             const label facei = wallFaces_[k];
-            const vector& Sf = mesh.faceAreas()[facei];
-            const scalar magSf = mag(Sf);
+            const label bFacei = facei - mesh.nInternalFaces();
+            if (!(wallFaceArea_[bFacei] > 0))
+            {
+                // A collapsed face has no plane (its neighbours hold it)
+                continue;
+            }
             wallFaceContact
             (
                 i,
-                mesh.faces()[facei],
-                mesh.points(),
-                mesh.faceCentres()[facei],
-                Sf/magSf,
-                magSf,
-                wallFaceBb_[facei - mesh.nInternalFaces()],
-                wallFaceIsBox_[facei - mesh.nInternalFaces()],
+                faces[facei],
+                points,
+                faceCentres[facei],
+                wallFaceNormal_[bFacei],
+                wallFaceArea_[bFacei],
+                wallFaceBb_[bFacei],
+                wallFaceIsBox_[bFacei],
                 // The patch only for the listed contacts (a search)
                 recordContacts_ ? mesh.boundaryMesh().whichPatch(facei) : -1,
                 contactPoints
@@ -1254,6 +1264,8 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     cellPositions_(),
     wallFaceBb_(),
     wallFaceIsBox_(),
+    wallFaceNormal_(),
+    wallFaceArea_(),
     recordContacts_(false),
     contacts_(),
     particleE_(),
