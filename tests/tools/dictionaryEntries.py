@@ -26,9 +26,9 @@ What counts as a read (comments stripped, calls may span lines):
      readPositive, readFinite, readPoisson, readParcelScalar, readScalar,
      readLabel, oneOf, and the lambda `get(dict, "key", positive)`
      (RaseraTriboCharging); Function1<Type>::New("key", dict); and
-     getChecked / getCheckedOrDefault(dict, "key", ...) (checkedEntry.H),
-     whose second argument is the key (their other literals are range
-     texts).
+     getChecked / getCheckedOrDefault / getPositive /
+     getPositiveOrDefault(dict, "key", ...) (checkedEntry.H), whose second
+     argument is the key (their other literals are range texts).
   3. A member call whose key is an identifier defined in the same file as
      a word constant with string literals (`const word key(c ? "a" : "b")`)
      reads those literals.
@@ -93,8 +93,8 @@ REVIEWED = {
     # --- helpers: the key is the helper's parameter; the literal keys of
     #     the helper's calls are scanned (HELPERS, the `get` lambda)
     ('checkedEntry.H', 'key'):
-        ([], 'getChecked/getCheckedOrDefault(dict, key, ...): helpers,'
-             ' calls scanned'),
+        ([], 'getChecked/getCheckedOrDefault/getPositive(OrDefault)(dict,'
+             ' key, ...): helpers, calls scanned'),
     ('ExplicitParcelInjection.C', 'key'):
         ([], 'readParcelScalar(dict, i, key, ...): helper, calls scanned'),
     ('RaseraTriboCharging.C', 'key'):
@@ -272,7 +272,8 @@ RECEIVER = re.compile(r'([A-Za-z_]\w*)\s*(?:\(\s*\))?\s*$')
 HELPER_CALL = re.compile(
     r'(?<![\w.>:])(?P<name>' + '|'.join(HELPERS) + r'|get)\s*(?=\()')
 KEYED_HELPER_CALL = re.compile(
-    r'(?<![\w.>:])(?P<name>getChecked|getCheckedOrDefault)\s*'
+    r'(?<![\w.>:])(?P<name>getChecked|getCheckedOrDefault|getPositive'
+    r'|getPositiveOrDefault)\s*'
     r'(?:<[^<>()]*>)?\s*(?=\()')
 FUNCTION1_CALL = re.compile(r'Function1\s*<[^<>]*>\s*::\s*New\s*(?=\()')
 WORD_CONST = re.compile(

@@ -1709,11 +1709,9 @@ Foam::meshPoisson::meshPoisson(const fvMesh& mesh, const dictionary& coeffs)
     coeffs_(coeffs),
     epsilonR_
     (
-        getCheckedOrDefault<scalar>
+        getPositiveOrDefault
         (
-            coeffs, "epsilonR", 1,
-            [](const scalar x) { return x > 0 && std::isfinite(x); },
-            ": it must be finite and > 0",
+            coeffs, "epsilonR", 1, std::numeric_limits<scalar>::max(), "",
             " (relative permittivity of the medium)"
         )
     ),

@@ -65,28 +65,15 @@ auto mutableWallRecords(Records& records)
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::readPositive
-(
-    const dictionary& d,
-    const word& key,
-    const scalar maxValue
-)
-{
-    return getChecked<scalar>
-    (
-        d, key,
-        [maxValue](const scalar x) { return x > 0 && x <= maxValue; },
-        ": it must be finite and > 0, at most " + Foam::name(maxValue)
-    );
-}
-
-
-template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
 {
     const particleMaterials& materials =
         this->owner().constProps().materials();
     const label n = nMaterials_;
+    auto youngsModulus = [](const dictionary& d)
+    {
+        return getPositive(d, "youngsModulus", inputLimits::large);
+    };
     auto poissonsRatio = [](const dictionary& d)
     {
         return getChecked<scalar>
@@ -102,7 +89,7 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
     particleNu_.setSize(n);
     for (label m = 0; m < n; ++m)
     {
-        particleE_[m] = chi_*readPositive(materials.dict(m), "youngsModulus");
+        particleE_[m] = chi_*youngsModulus(materials.dict(m));
         particleNu_[m] = poissonsRatio(materials.dict(m));
     }
 
@@ -127,7 +114,7 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
 
     // The walls: walls/<material> overrides e, mu and rollingFriction
     const dictionary& walls = coeffs.subDict("walls");
-    const scalar Ew = chi_*readPositive(walls, "youngsModulus");
+    const scalar Ew = chi_*youngsModulus(walls);
     const scalar nuw = poissonsRatio(walls);
     const scalar ew = walls.get<scalar>("e");
     const scalar muw = walls.get<scalar>("mu");
@@ -1206,7 +1193,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     il_
     (
         owner.mesh(),
-        readPositive(this->coeffDict(), "maxInteractionDistance"),
+        getPositive
+        (
+            this->coeffDict(), "maxInteractionDistance", inputLimits::large
+        ),
         false,
         this->coeffDict().template lookupOrDefault<word>
         (
@@ -1233,10 +1223,21 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         this->coeffDict().template lookupOrDefault<scalar>
         (
             "neighbourSkin",
-            0.25*readPositive(this->coeffDict(), "maxInteractionDistance")
+            0.25
+           *getPositive
+            (
+                this->coeffDict(), "maxInteractionDistance",
+                inputLimits::large
+            )
         )
     ),
-    maxDistance_(readPositive(this->coeffDict(), "maxInteractionDistance")),
+    maxDistance_
+    (
+        getPositive
+        (
+            this->coeffDict(), "maxInteractionDistance", inputLimits::large
+        )
+    ),
     subCycles_
     (
         owner.outputProperties().template lookupOrDefault<label>

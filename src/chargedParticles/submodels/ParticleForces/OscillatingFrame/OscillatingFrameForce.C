@@ -28,11 +28,10 @@ Foam::OscillatingFrameForce<CloudType>::OscillatingFrameForce
     ),
     frequency_
     (
-        getChecked<scalar>
+        getPositive
         (
             this->coeffs(), "frequency",
-            [](const scalar f) { return f > 0 && std::isfinite(f); },
-            ": it must be finite and > 0 [Hz]"
+            std::numeric_limits<scalar>::max(), " [Hz]"
         )
     ),
     acceleration_(Zero)

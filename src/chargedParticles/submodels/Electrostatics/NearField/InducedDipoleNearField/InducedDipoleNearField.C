@@ -44,22 +44,6 @@ Foam::vector Foam::InducedDipoleNearField<CloudType>::depolarisationFactors
 }
 
 
-template<class CloudType>
-Foam::scalar Foam::InducedDipoleNearField<CloudType>::readPositive
-(
-    const word& key,
-    const scalar deflt
-) const
-{
-    return getCheckedOrDefault<scalar>
-    (
-        this->dict(), key, deflt,
-        [](const scalar v) { return v > 0 && std::isfinite(v); },
-        ": it must be finite and > 0"
-    );
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -71,9 +55,12 @@ Foam::InducedDipoleNearField<CloudType>::InducedDipoleNearField
 )
 :
     NearFieldModel<CloudType>(dict, owner),
-    rNearGiven_(dict.found("rNear") ? readPositive("rNear", 1) : -1),
+    rNearGiven_
+    (
+        dict.found("rNear") ? getPositive(this->dict(), "rNear") : -1
+    ),
     rNearDiameters_(rNearDiameters),
-    tolerance_(readPositive("tolerance", 1e-8)),
+    tolerance_(getPositiveOrDefault(this->dict(), "tolerance", 1e-8)),
     // A label: a count given as 0.5 is an error, not truncated to 0
     maxIter_
     (
