@@ -17,64 +17,44 @@ constexpr Foam::scalar Foam::rigidBodyRotation::unitTolerance;
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::rigidBodyRotation::checkMoments
+void Foam::rigidBodyRotation::stopMoments
 (
     const vector& I,
     const char* caller
 )
 {
-    for (direction i = 0; i < vector::nComponents; ++i)
-    {
-        // !(x > 0) also catches NaN
-        if (!(I[i] > 0) || !std::isfinite(I[i]))
-        {
-            FatalErrorIn(caller)
-                << "Principal moments of inertia " << I
-                << " are out of range: each must be finite and > 0"
-                << exit(FatalError);
-        }
-    }
+    FatalErrorIn(caller)
+        << "Principal moments of inertia " << I
+        << " are out of range: each must be finite and > 0"
+        << exit(FatalError);
 }
 
 
-void Foam::rigidBodyRotation::checkOrientation
+void Foam::rigidBodyRotation::stopOrientation
 (
     const quaternion& q,
     const char* caller
 )
 {
-    const scalar magQ = mag(q);
-
-    // A NaN component makes magQ NaN and the comparison false
-    if (!(mag(magQ - 1) <= unitTolerance))
-    {
-        FatalErrorIn(caller)
-            << "Orientation quaternion " << q << " of magnitude " << magQ
-            << " is not a finite unit quaternion (tolerance "
-            << unitTolerance << ")" << nl
-            << "    Build it with rigidBodyRotation::fromEulerAngles or"
-            << " normalise it once when reading it"
-            << exit(FatalError);
-    }
+    FatalErrorIn(caller)
+        << "Orientation quaternion " << q << " of magnitude " << mag(q)
+        << " is not a finite unit quaternion (tolerance "
+        << unitTolerance << ")" << nl
+        << "    Build it with rigidBodyRotation::fromEulerAngles or"
+        << " normalise it once when reading it"
+        << exit(FatalError);
 }
 
 
-void Foam::rigidBodyRotation::checkFinite
+void Foam::rigidBodyRotation::stopNotFinite
 (
     const vector& v,
     const char* name,
     const char* caller
 )
 {
-    for (direction i = 0; i < vector::nComponents; ++i)
-    {
-        if (!std::isfinite(v[i]))
-        {
-            FatalErrorIn(caller)
-                << name << " = " << v << " is not finite"
-                << exit(FatalError);
-        }
-    }
+    FatalErrorIn(caller)
+        << name << " = " << v << " is not finite" << exit(FatalError);
 }
 
 
