@@ -62,6 +62,22 @@ auto mutableWallRecords(Records& records)
 } // End anonymous namespace
 
 
+namespace Foam
+{
+namespace
+{
+
+// The coefficients' maxInteractionDistance [m] (the interaction lists, the
+// default skin and the reach checks read it)
+scalar maxInteractionDistance(const dictionary& coeffs)
+{
+    return getPositive(coeffs, "maxInteractionDistance", inputLimits::large);
+}
+
+} // End anonymous namespace
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -380,8 +396,15 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
         const point& x = bodies_.x(i);
         for (const label facei : directWallFaces[p.cell()])
         {
-            const boundBox& bb = wallFaceBb_[facei - mesh.nInternalFaces()];
-            if (magSqr(x - bb.nearest(x)) < sqr(r + skin))
+            // A collapsed face (zero area) has no plane: its neighbours
+            // hold the wall there
+            const label bFacei = facei - mesh.nInternalFaces();
+            const boundBox& bb = wallFaceBb_[bFacei];
+            if
+            (
+                wallFaceArea_[bFacei] > 0
+             && magSqr(x - bb.nearest(x)) < sqr(r + skin)
+            )
             {
                 wallFaces_.append(facei);
             }
@@ -951,11 +974,6 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
         {
             const label facei = wallFaces_[k];
             const label bFacei = facei - mesh.nInternalFaces();
-            if (!(wallFaceArea_[bFacei] > 0))
-            {
-                // A collapsed face has no plane (its neighbours hold it)
-                continue;
-            }
             wallFaceContact
             (
                 i,
@@ -1193,10 +1211,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     il_
     (
         owner.mesh(),
-        getPositive
-        (
-            this->coeffDict(), "maxInteractionDistance", inputLimits::large
-        ),
+        maxInteractionDistance(this->coeffDict()),
         false,
         this->coeffDict().template lookupOrDefault<word>
         (
@@ -1223,21 +1238,10 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
         this->coeffDict().template lookupOrDefault<scalar>
         (
             "neighbourSkin",
-            0.25
-           *getPositive
-            (
-                this->coeffDict(), "maxInteractionDistance",
-                inputLimits::large
-            )
+            0.25*maxInteractionDistance(this->coeffDict())
         )
     ),
-    maxDistance_
-    (
-        getPositive
-        (
-            this->coeffDict(), "maxInteractionDistance", inputLimits::large
-        )
-    ),
+    maxDistance_(maxInteractionDistance(this->coeffDict())),
     subCycles_
     (
         owner.outputProperties().template lookupOrDefault<label>
