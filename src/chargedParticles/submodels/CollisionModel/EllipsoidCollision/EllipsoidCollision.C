@@ -128,6 +128,17 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
         }
     );
 
+    // The collision time's per-material factors
+    selfEstar_.setSize(n);
+    rayleighFactorSqr_.setSize(n);
+    for (label m = 0; m < n; ++m)
+    {
+        selfEstar_[m] = pairProperties(m, m).Estar;
+        rayleighFactorSqr_[m] =
+            particleE_[m]/(2*(1 + particleNu_[m]))
+           *sqr(0.8766 + 0.163*particleNu_[m]);
+    }
+
     // The walls: walls/<material> overrides e, mu and rollingFriction
     const dictionary& walls = coeffs.subDict("walls");
     const scalar Ew = chi_*youngsModulus(walls);
@@ -1274,7 +1285,12 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     recordContacts_(false),
     contacts_(),
     particleE_(),
-    particleNu_()
+    particleNu_(),
+    selfEstar_(),
+    rayleighFactorSqr_(),
+    kicked_(),
+    nKicked_(0),
+    kickedValid_(false)
 {
     checkCoeffs();
     makeLaws(this->coeffDict());
@@ -1338,9 +1354,10 @@ Foam::EllipsoidCollision<CloudType>::referralNeighbours() const
 
 
 template<class CloudType>
-Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
+inline void Foam::EllipsoidCollision<CloudType>::addCollisionTime
 (
-    scalar* rayleighStep
+    const parcelType& p,
+    collisionTimeMinima& m
 ) const
 {
     // Worst case in the cloud: the fastest parcel hitting a copy of
@@ -1353,75 +1370,101 @@ Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
     // (m*/E*)^2/R*/v where the steps stay in the normal range (no log per
     // parcel), else through its logarithm (the heavy, soft or resting
     // parcels of the accepted ranges, inputLimits.H, overflow it)
-    scalar minTcArg = VGREAT;
-    scalar minLogTcArg = VGREAT;
-    scalar minRayleighSqr = sqr(GREAT);
-
-    // Per material: E* of two of its parcels, and the square of the
-    // Rayleigh step's sqrt(G) (0.8766 + 0.163 nu)
-    scalarList Estar(nMaterials_);
-    scalarList rayleighFactorSqr(nMaterials_);
-    forAll(Estar, m)
-    {
-        Estar[m] = pairProperties(m, m).Estar;
-        rayleighFactorSqr[m] =
-            particleE_[m]/(2*(1 + particleNu_[m]))
-           *sqr(0.8766 + 0.163*particleNu_[m]);
-    }
     auto normal = [](const scalar x) { return x > 1e-290 && x < 1e290; };
-    for (const parcelType& p : this->owner())
+    const label material = p.material();
+    const vector& s = p.semiAxes();
+    const scalar c = cmptMin(s);
+    const scalar Rtip = sqr(c)/cmptMax(s);
+    const scalar mStar = 0.5*p.mass();
+    const scalar v = max(2*mag(p.U()), VSMALL);
+
+    const scalar mByE2 = sqr(mStar/selfEstar_[material]);
+    const scalar arg = mByE2/(0.5*Rtip)/v;
+    if (normal(mByE2) && normal(arg))
     {
-        const label material = p.material();
-        const vector& s = p.semiAxes();
-        const scalar c = cmptMin(s);
-        const scalar Rtip = sqr(c)/cmptMax(s);
-        const scalar mStar = 0.5*p.mass();
-        const scalar v = max(2*mag(p.U()), VSMALL);
-
-        const scalar mByE2 = sqr(mStar/Estar[material]);
-        const scalar arg = mByE2/(0.5*Rtip)/v;
-        if (normal(mByE2) && normal(arg))
-        {
-            minTcArg = min(minTcArg, arg);
-        }
-        else
-        {
-            minLogTcArg = min
-            (
-                minLogTcArg,
-                2*(Foam::log(mStar) - Foam::log(Estar[material]))
-              - Foam::log(0.5*Rtip) - Foam::log(v)
-            );
-        }
-
-        // Rayleigh time step, Rasera Eq. (13), for the report
-        minRayleighSqr =
-            min(minRayleighSqr, sqr(c)*p.rho()/rayleighFactorSqr[material]);
+        m.tcArg = min(m.tcArg, arg);
     }
-    reduce(minTcArg, minOp<scalar>());
-    reduce(minLogTcArg, minOp<scalar>());
-    reduce(minRayleighSqr, minOp<scalar>());
+    else
+    {
+        m.logTcArg = min
+        (
+            m.logTcArg,
+            2*(Foam::log(mStar) - Foam::log(selfEstar_[material]))
+          - Foam::log(0.5*Rtip) - Foam::log(v)
+        );
+    }
+
+    // Rayleigh time step, Rasera Eq. (13), for the report
+    m.rayleighSqr =
+        min(m.rayleighSqr, sqr(c)*p.rho()/rayleighFactorSqr_[material]);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::reducedCollisionTime
+(
+    collisionTimeMinima m,
+    scalar* rayleighStep
+) const
+{
+    reduce(m.tcArg, minOp<scalar>());
+    reduce(m.logTcArg, minOp<scalar>());
+    reduce(m.rayleighSqr, minOp<scalar>());
     if (rayleighStep)
     {
-        *rayleighStep =
-            Foam::sqrt(minRayleighSqr)*constant::mathematical::pi;
+        *rayleighStep = Foam::sqrt(m.rayleighSqr)*constant::mathematical::pi;
     }
-    if (minTcArg < VGREAT)
+    if (m.tcArg < VGREAT)
     {
-        minLogTcArg = min(minLogTcArg, Foam::log(minTcArg));
+        m.logTcArg = min(m.logTcArg, Foam::log(m.tcArg));
     }
     return
-        0.2*minLogTcArg < Foam::log(GREAT/2.868)
-      ? 2.868*Foam::exp(0.2*minLogTcArg)
+        0.2*m.logTcArg < Foam::log(GREAT/2.868)
+      ? 2.868*Foam::exp(0.2*m.logTcArg)
       : GREAT;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::EllipsoidCollision<CloudType>::collisionTime
+(
+    scalar* rayleighStep
+) const
+{
+    collisionTimeMinima m;
+    for (const parcelType& p : this->owner())
+    {
+        addCollisionTime(p, m);
+    }
+    return reducedCollisionTime(m, rayleighStep);
 }
 
 
 template<class CloudType>
 Foam::label Foam::EllipsoidCollision<CloudType>::nSubCycles() const
 {
+    // The minima of the parcels' last kicks if the step starts from
+    // their velocities, with those of the parcels injected since
+    // (appended to the cloud)
     scalar minRayleigh = GREAT;
-    const scalar minTc = collisionTime(&minRayleigh);
+    scalar minTc = GREAT;
+    const label nInjected = this->owner().size() - nKicked_;
+    if (kickedValid_ && nInjected >= 0)
+    {
+        collisionTimeMinima m = kicked_;
+        const parcelType* p = nInjected ? this->owner().last() : nullptr;
+        for (label i = 0; i < nInjected; ++i)
+        {
+            addCollisionTime(*p, m);
+            p = static_cast<const parcelType*>(p->prev_);
+        }
+        minTc = reducedCollisionTime(m, &minRayleigh);
+    }
+    else
+    {
+        minTc = collisionTime(&minRayleigh);
+    }
+    kickedValid_ = false;
 
     const scalar deltaT = this->owner().mesh().time().deltaTValue();
     if (minTc >= GREAT)
