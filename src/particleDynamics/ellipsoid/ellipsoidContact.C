@@ -86,7 +86,7 @@ void tangents(const vector& m, vector& t1, vector& t2)
     else e.z() = 1;
 
     t1 = e - (e & m)*m;
-    t1 /= mag(t1);
+    t1 *= 1/mag(t1);
     t2 = m ^ t1;
 }
 
@@ -95,26 +95,29 @@ void tangents(const vector& m, vector& t1, vector& t2)
           Gradient of the reduced radius (see ellipsoidContact.H)
 \*---------------------------------------------------------------------------*/
 
-// S^-1 n and the support distance h = sqrt(n.S^-1 n) of e along the unit n:
-// what the curvature and its gradient need of the support point. The
-// penetration depth's Newton state holds them for the common normal
-// (depthFunction::state w, h: the same operations), so the contact's
-// curvatures do not compute them again
+// S^-1 n, the support distance h = sqrt(n.S^-1 n) of e along the unit n
+// and 1/h: what the curvature and its gradient need of the support point.
+// The penetration depth's Newton state holds them for the common normal
+// (depthFunction::state w, h, hInv: the same operations), so the
+// contact's curvatures do not compute them again
 struct supportAlong
 {
     vector Mn;
     scalar h;
+    scalar hInv;
 
-    supportAlong(const vector& Mn, const scalar h)
+    supportAlong(const vector& Mn, const scalar h, const scalar hInv)
     :
         Mn(Mn),
-        h(h)
+        h(h),
+        hInv(hInv)
     {}
 
     supportAlong(const ellipsoid& e, const vector& n)
     :
         Mn(e.Sinv() & n),
-        h(Foam::sqrt(n & Mn))
+        h(Foam::sqrt(n & Mn)),
+        hInv(1/h)
     {}
 };
 
@@ -140,32 +143,36 @@ void curvatureAlong
     const scalar trS = tr(e.S());
     const scalar tau = trS - (n & Sn);
     K = 0.5*h*tau;
-    const vector g = (0.5*tau/h)*Mn + h*(trS*n - Sn);
+    const vector g = (0.5*tau*sup.hInv)*Mn + h*(trS*n - Sn);
     gradK = g - (g & n)*n;
 }
 
 
 // Radii-of-curvature tensor D = grad grad h of e along the unit n,
 // applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n);
-// S^-1 n and h from the body's supportAlong along n
+// S^-1 n and 1/h from the body's supportAlong along n (products with the
+// reciprocals: a division costs several multiplications, and D is
+// applied six times per contact)
 class radiiOfCurvature
 {
     const symmTensor& Minv_;
-    const supportAlong& sup_;
+    const vector& Mn_;
+    const scalar hInv_;
+    const scalar hInv3_;
 
 public:
 
     radiiOfCurvature(const ellipsoid& e, const supportAlong& sup)
     :
         Minv_(e.Sinv()),
-        sup_(sup)
+        Mn_(sup.Mn),
+        hInv_(sup.hInv),
+        hInv3_(sup.hInv*sup.hInv*sup.hInv)
     {}
 
     vector operator()(const vector& t) const
     {
-        const vector& Mn = sup_.Mn;
-        const scalar h = sup_.h;
-        return (Minv_ & t)/h - Mn*((Mn & t)/(h*h*h));
+        return (Minv_ & t)*hInv_ - Mn_*((Mn_ & t)*hInv3_);
     }
 };
 
@@ -245,6 +252,10 @@ public:
         vector m;           // unit direction
         vector w1, w2;      // M1 m, M2 m
         scalar h1, h2;      // support distances
+        scalar hInv1, hInv2;    // their reciprocals, for the gradient and
+                                // the Hessian: set by reciprocals(), not
+                                // by eval() (most tracked pairs are
+                                // decided by g alone)
         scalar g;           // depth
     };
 
@@ -272,19 +283,31 @@ public:
         return s;
     }
 
-    // grad g = x1 - x2 (relative to the centres: no large coordinates)
+    // 1/h1, 1/h2 of s: the gradient and the Hessian multiply by them (a
+    // division costs several multiplications; a Newton iteration's
+    // gradient and two Hessian products would divide 22 times)
+    static void reciprocals(state& s)
+    {
+        s.hInv1 = 1/s.h1;
+        s.hInv2 = 1/s.h2;
+    }
+
+    // grad g = x1 - x2 (relative to the centres: no large coordinates);
+    // s with its reciprocals
     vector grad(const state& s) const
     {
-        return s.w1/s.h1 + s.w2/s.h2 - d_;
+        return s.w1*s.hInv1 + s.w2*s.hInv2 - d_;
     }
 
     // Euclidean Hessian of h1 + h2 applied to t:
-    // (M t)/h - (M m)(M m . t)/h^3 for each body
+    // (M t)/h - (M m)(M m . t)/h^3 for each body; s with its reciprocals
     vector hessian(const state& s, const vector& t) const
     {
         return
-            (M1_ & t)/s.h1 - s.w1*((s.w1 & t)/(s.h1*s.h1*s.h1))
-          + (M2_ & t)/s.h2 - s.w2*((s.w2 & t)/(s.h2*s.h2*s.h2));
+            (M1_ & t)*s.hInv1
+          - s.w1*((s.w1 & t)*(s.hInv1*s.hInv1*s.hInv1))
+          + (M2_ & t)*s.hInv2
+          - s.w2*((s.w2 & t)*(s.hInv2*s.hInv2*s.hInv2));
     }
 };
 
@@ -444,6 +467,7 @@ depthFunction::state newtonOnSphere
         }
         iterations = iter + 1;
 
+        depthFunction::reciprocals(s);
         const vector grad = f.grad(s);
         vector t1, t2;
         tangents(s.m, t1, t2);
@@ -469,7 +493,7 @@ depthFunction::state newtonOnSphere
         if (mu == 0 && magS < 1e-4)
         {
             const vector m = s.m + step;
-            trial = f.eval(m/mag(m));
+            trial = f.eval(m*(1/mag(m)));
             accepted = true;
         }
         else
@@ -478,7 +502,7 @@ depthFunction::state newtonOnSphere
             for (label k = 0; k < 50; ++k)
             {
                 const vector m = s.m + alpha*step;
-                trial = f.eval(m/mag(m));
+                trial = f.eval(m*(1/mag(m)));
                 if (trial.g <= s.g + 1e-4*alpha*slope)
                 {
                     accepted = true;
@@ -524,8 +548,9 @@ result commonNormalResult
     r.iterations = iterations;
     r.converged = converged;
     r.n = s.m;
-    r.x1 = e1.centre() + s.w1/s.h1;
-    r.x2 = e2.centre() - s.w2/s.h2;
+    const scalar hInv1 = 1/s.h1, hInv2 = 1/s.h2;
+    r.x1 = e1.centre() + s.w1*hInv1;
+    r.x2 = e2.centre() - s.w2*hInv2;
 
     // g = n.(x1 - x2) by 1-homogeneity, without the cancellation of
     // differencing two possibly large coordinates
@@ -537,7 +562,8 @@ result commonNormalResult
         scalar Ksum;
         r.gradR = radiusGradientAndCurvature
         (
-            e1, e2, r, supportAlong(s.w1, s.h1), supportAlong(s.w2, s.h2),
+            e1, e2, r, supportAlong(s.w1, s.h1, hInv1),
+            supportAlong(s.w2, s.h2, hInv2),
             Ksum
         );
         r.reducedRadius = 1/Ksum;
@@ -571,7 +597,7 @@ certificate certifiedSingleStart
     depthFunction::state s0;
     if (tracked)
     {
-        s0 = f.eval(nTrack/mag(nTrack));
+        s0 = f.eval(nTrack*(1/mag(nTrack)));
         if (s0.g < 0)
         {
             nTrack = s0.m;
