@@ -255,7 +255,8 @@ public:
         scalar hInv1, hInv2;    // their reciprocals, for the gradient and
                                 // the Hessian: set by reciprocals(), not
                                 // by eval() (most tracked pairs are
-                                // decided by g alone)
+                                // decided by g alone); NaN until then, so
+                                // a use before it fails loudly (sigFpe)
         scalar g;           // depth
     };
 
@@ -280,6 +281,7 @@ public:
         s.h1 = Foam::sqrt(m & s.w1);
         s.h2 = Foam::sqrt(m & s.w2);
         s.g = s.h1 + s.h2 - (m & d_);
+        s.hInv1 = s.hInv2 = std::numeric_limits<scalar>::quiet_NaN();
         return s;
     }
 
