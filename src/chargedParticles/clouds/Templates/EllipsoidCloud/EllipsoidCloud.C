@@ -498,6 +498,13 @@ void Foam::EllipsoidCloud<CloudType>::readSolutionControls()
         ": it must be >= 0 (time steps between sorts of the parcels by"
         " cell; 0: never; default 1000)"
     );
+    sphereOrientation_ =
+        solDict.template getOrDefault<bool>("sphereOrientation", false);
+    if (sphereOrientation_)
+    {
+        Info<< "    Sphere orientations: integrated (sphereOrientation yes)"
+            << endl;
+    }
     sortMinParcels_ = getCheckedOrDefault<label>
     (
         solDict, "sortMinParcels", 5000,
@@ -624,6 +631,21 @@ void Foam::EllipsoidCloud<CloudType>::setLogAndTracking()
 }
 
 
+template<class CloudType>
+void Foam::EllipsoidCloud<CloudType>::integrateSphereOrientation
+(
+    const word& reader
+)
+{
+    if (!sphereOrientation_)
+    {
+        sphereOrientation_ = true;
+        Info<< "    Sphere orientations: integrated (read by " << reader
+            << ")" << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -656,7 +678,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     sortInterval_(0),
     sortMinParcels_(0),
     checkAllInjected_(true),
-    gravityOnly_(false)
+    gravityOnly_(false),
+    sphereOrientation_(false)
 {
     if (this->solution().active())
     {
@@ -693,7 +716,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     sortMinParcels_(c.sortMinParcels_),
     checkAllInjected_(true),
     gravityOnly_(c.gravityOnly_),
-    gravity_(c.gravity_)
+    gravity_(c.gravity_),
+    sphereOrientation_(c.sphereOrientation_)
 {}
 
 
@@ -716,7 +740,8 @@ Foam::EllipsoidCloud<CloudType>::EllipsoidCloud
     sortInterval_(c.sortInterval_),
     sortMinParcels_(c.sortMinParcels_),
     checkAllInjected_(true),
-    gravityOnly_(false)
+    gravityOnly_(false),
+    sphereOrientation_(c.sphereOrientation_)
 {}
 
 

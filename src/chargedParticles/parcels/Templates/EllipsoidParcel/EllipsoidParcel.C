@@ -73,8 +73,10 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     }
 
     // The drift (lazy or tracked: LazyTrackingParcel), then the rotation
-    // of the orientation with the kicked angular momentum and the contact
-    // body for the collision model, once, where the move ends: in parallel
+    // of the orientation with the kicked angular momentum (a sphere's
+    // where the cloud integrates them: EllipsoidCloud::sphereOrientation)
+    // and the contact body for the collision model, once, where the move
+    // ends: in parallel
     // Cloud::move calls move again for every parcel, finished or not,
     // until no parcel changes processor, and a parcel may arrive with its
     // step done
@@ -82,7 +84,10 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     const bool keep = ParcelType::move(cloud, td, trackTime);
     if (ends && keep && !td.switchProcessor)
     {
-        rotate(trackTime);
+        if (!isSphere() || cloud.sphereOrientation())
+        {
+            rotate(trackTime);
+        }
         received_ = false;
         cloud.parcelMoved
         (

@@ -736,6 +736,10 @@ Foam::BemNearField<CloudType>::BemNearField
         << " x the smaller semi-axis, " << nPatches_ << " patches per parcel,"
         << " isolated parcels: " << isolated_ << ", parcels near a cluster: "
         << neighbours << endl;
+
+    // The surface meshes are placed by the parcels' orientations,
+    // spheres' included: their patches turn with the surface
+    owner.integrateSphereOrientation(typeName);
 }
 
 
