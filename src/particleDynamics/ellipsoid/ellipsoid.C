@@ -61,7 +61,7 @@ vector ontoSurface(const vector& xb, const vector& ax, const char* caller)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::ellipsoid::init()
+void Foam::ellipsoid::init(const bool checkRotation)
 {
     if
     (
@@ -84,24 +84,30 @@ void Foam::ellipsoid::init()
 
     // Proper orthogonal to 1e-9: a tensor off by more is not a rotation
     // (e.g. built from an unnormalised quaternion), and the contact would
-    // silently use a distorted shape
-    const tensor E = (R_ & R_.T()) - tensor::I;
-    scalar err = 0;
-    for (direction i = 0; i < tensor::nComponents; ++i)
+    // silently use a distorted shape. A rotation from a normalised
+    // quaternion is one to round-off: not checked (the test is a third
+    // of the construction, and the contact model builds a shell per
+    // parcel and step)
+    if (checkRotation)
     {
-        if (!std::isfinite(R_[i]))
+        const tensor E = (R_ & R_.T()) - tensor::I;
+        scalar err = 0;
+        for (direction i = 0; i < tensor::nComponents; ++i)
         {
-            err = GREAT;
+            if (!std::isfinite(R_[i]))
+            {
+                err = GREAT;
+            }
+            err = max(err, mag(E[i]));
         }
-        err = max(err, mag(E[i]));
-    }
-    if (!(err < 1e-9) || !(det(R_) > 0))
-    {
-        FatalErrorInFunction
-            << "Ellipsoid rotation tensor " << R_
-            << " is not a rotation: |R R^T - I| = " << err
-            << ", det R = " << det(R_) << " (need R R^T = I, det R = 1)"
-            << exit(FatalError);
+        if (!(err < 1e-9) || !(det(R_) > 0))
+        {
+            FatalErrorInFunction
+                << "Ellipsoid rotation tensor " << R_
+                << " is not a rotation: |R R^T - I| = " << err
+                << ", det R = " << det(R_) << " (need R R^T = I, det R = 1)"
+                << exit(FatalError);
+        }
     }
 
     const vector& ax = semiAxes_;
@@ -127,7 +133,7 @@ Foam::ellipsoid::ellipsoid
     centre_(centre),
     R_(R)
 {
-    init();
+    init(true);
 }
 
 
@@ -150,7 +156,7 @@ Foam::ellipsoid::ellipsoid
             << " is zero or not finite" << exit(FatalError);
     }
     R_ = quaternion(q.w()/m, q.v()/m).R();
-    init();
+    init(false);
 }
 
 
@@ -160,7 +166,7 @@ Foam::ellipsoid::ellipsoid(const scalar radius, const point& centre)
     centre_(centre),
     R_(tensor::I)
 {
-    init();
+    init(false);
 }
 
 
