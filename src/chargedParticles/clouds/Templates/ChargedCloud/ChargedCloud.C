@@ -293,6 +293,7 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     electrostaticsModel_(nullptr),
     triboChargingModel_(nullptr),
     forcesStale_(true),
+    electrostaticForces_(false),
     // One entry per patch that is not a processor patch: the same list on
     // every processor (processor patches differ in number between them)
     escapedCharge0_(this->mesh().boundaryMesh().nNonProcessor(), Zero),
@@ -324,7 +325,8 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
         }
 
         // Electrostatics off: no stale force from a restart may act
-        if (!electrostatics().active())
+        electrostaticForces_ = electrostatics().active();
+        if (!electrostaticForces_)
         {
             electrostatics().update();
         }
@@ -343,7 +345,8 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     constProps_(c.constProps_),
     electrostaticsModel_(c.electrostaticsModel_->clone()),
     triboChargingModel_(c.triboChargingModel_->clone()),
-    forcesStale_(c.forcesStale_)
+    forcesStale_(c.forcesStale_),
+    electrostaticForces_(c.electrostaticForces_)
 {}
 
 
@@ -359,7 +362,8 @@ Foam::ChargedCloud<CloudType>::ChargedCloud
     constProps_(c.constProps_),
     electrostaticsModel_(nullptr),
     triboChargingModel_(nullptr),
-    forcesStale_(true)
+    forcesStale_(true),
+    electrostaticForces_(false)
 {}
 
 

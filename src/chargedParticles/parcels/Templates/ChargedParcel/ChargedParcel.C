@@ -150,8 +150,7 @@ bool Foam::ChargedParcel<ParcelType>::move
         // move, see EllipsoidParcel::move); the base layer adds the
         // contact force and torque
         checkFinite(cloud, false);
-        this->U() += (0.5*trackTime/this->mass())*fE_;
-        this->angularMomentum() += (0.5*trackTime)*tE_;
+        electrostaticKick(cloud, trackTime);
     }
 
     const bool keep = ParcelType::move(cloud, td, trackTime);
