@@ -91,6 +91,15 @@ void tangents(const vector& m, vector& t1, vector& t2)
 }
 
 
+// The tangent basis of a direction, kept where it was formed (the Newton
+// iteration that converged) for the contact's curvatures at that direction
+struct tangentFrame
+{
+    vector t1, t2;
+    bool valid = false;
+};
+
+
 /*---------------------------------------------------------------------------*\
           Gradient of the reduced radius (see ellipsoidContact.H)
 \*---------------------------------------------------------------------------*/
@@ -179,7 +188,8 @@ public:
 
 // gradR of a common-normal contact r (ellipsoidContact::
 // reducedRadiusGradient, see ellipsoidContact.H) and the curvature sum
-// K1 + K2 along its normal, with both bodies' support data along it
+// K1 + K2 along its normal, with both bodies' support data along it (and
+// the tangent basis of the normal where the caller has it)
 radiusGradient radiusGradientAndCurvature
 (
     const ellipsoid& e1,
@@ -187,7 +197,8 @@ radiusGradient radiusGradientAndCurvature
     const result& r,
     const supportAlong& sup1,
     const supportAlong& sup2,
-    scalar& Ksum
+    scalar& Ksum,
+    const tangentFrame* frame = nullptr
 )
 {
     const vector& n = r.n;
@@ -198,9 +209,18 @@ radiusGradient radiusGradientAndCurvature
     Ksum = K1 + K2;
     const vector G = gradK1 + gradK2;
 
-    // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P
+    // w = H^-1 G on the tangent plane, H = D1 + D2 - overlap P, in the
+    // basis of n (the Newton iteration's where it formed it at n)
     vector t1, t2;
-    tangents(n, t1, t2);
+    if (frame && frame->valid)
+    {
+        t1 = frame->t1;
+        t2 = frame->t2;
+    }
+    else
+    {
+        tangents(n, t1, t2);
+    }
     const radiiOfCurvature D1(e1, sup1), D2(e2, sup2);
     const vector Dt1 = D1(t1) + D2(t1);
     const vector Dt2 = D1(t2) + D2(t2);
@@ -445,7 +465,8 @@ depthFunction::state newtonOnSphere
     const scalar L,
     label& iterations,
     bool& converged,
-    const bool stopWhenSeparated = false
+    const bool stopWhenSeparated = false,
+    tangentFrame* frame = nullptr
 )
 {
     // Tolerances: the tangential residual x1 - x2 is a difference of
@@ -459,6 +480,10 @@ depthFunction::state newtonOnSphere
     depthFunction::state s = s0;
     converged = false;
     iterations = 0;
+    if (frame)
+    {
+        frame->valid = false;
+    }
 
     for (label iter = 0; iter < maxIter; ++iter)
     {
@@ -479,6 +504,12 @@ depthFunction::state newtonOnSphere
         if (magG <= tolG)
         {
             converged = true;
+            if (frame)
+            {
+                frame->t1 = t1;
+                frame->t2 = t2;
+                frame->valid = true;
+            }
             break;
         }
 
@@ -541,7 +572,8 @@ result commonNormalResult
     const ellipsoid& e2,
     const depthFunction::state& s,
     const label iterations,
-    const bool converged
+    const bool converged,
+    const tangentFrame& frame
 )
 {
     result r;
@@ -566,7 +598,7 @@ result commonNormalResult
         (
             e1, e2, r, supportAlong(s.w1, s.h1, hInv1),
             supportAlong(s.w2, s.h2, hInv2),
-            Ksum
+            Ksum, &frame
         );
         r.reducedRadius = 1/Ksum;
     }
@@ -621,8 +653,9 @@ certificate certifiedSingleStart
 
     label iters = 0;
     bool conv = false;
+    tangentFrame frame;
     const depthFunction::state s =
-        newtonOnSphere(f, s0, L, iters, conv, true);
+        newtonOnSphere(f, s0, L, iters, conv, true, &frame);
 
     if (s.g < 0)
     {
@@ -637,7 +670,7 @@ certificate certifiedSingleStart
         e1.minRadiusOfCurvature() + e2.minRadiusOfCurvature();
     if (conv && s.g > 0 && s.g < 0.9*rollingRadius)
     {
-        r = commonNormalResult(e1, e2, s, iters, true);
+        r = commonNormalResult(e1, e2, s, iters, true, frame);
         nTrack = s.m;
         return certificate::contact;
     }
@@ -724,15 +757,18 @@ result robustCore
     bestState.g = GREAT;
     label bestIters = 0;
     bool bestConverged = false;
+    tangentFrame bestFrame;
 
     for (label k = 0; k < nStarts; ++k)
     {
         label iters = 0;
         bool conv = false;
+        tangentFrame frame;
         const depthFunction::state s =
             newtonOnSphere
             (
-                f, f.eval(starts[k]/mag(starts[k])), L, iters, conv
+                f, f.eval(starts[k]/mag(starts[k])), L, iters, conv, false,
+                &frame
             );
 
         const bool better =
@@ -744,10 +780,14 @@ result robustCore
             bestState = s;
             bestIters = iters;
             bestConverged = conv;
+            bestFrame = frame;
         }
     }
 
-    return commonNormalResult(e1, e2, bestState, bestIters, bestConverged);
+    return commonNormalResult
+    (
+        e1, e2, bestState, bestIters, bestConverged, bestFrame
+    );
 }
 
 
