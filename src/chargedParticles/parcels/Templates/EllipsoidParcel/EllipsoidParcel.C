@@ -76,10 +76,9 @@ bool Foam::EllipsoidParcel<ParcelType>::move
     // of the orientation with the kicked angular momentum (a sphere's
     // where the cloud integrates them: EllipsoidCloud::sphereOrientation)
     // and the contact body for the collision model, once, where the move
-    // ends: in parallel
-    // Cloud::move calls move again for every parcel, finished or not,
-    // until no parcel changes processor, and a parcel may arrive with its
-    // step done
+    // ends: in parallel Cloud::move calls move again for every parcel,
+    // finished or not, until no parcel changes processor, and a parcel
+    // may arrive with its step done
     const bool ends = this->stepFraction() < 1 || received_;
     const bool keep = ParcelType::move(cloud, td, trackTime);
     if (ends && keep && !td.switchProcessor)
