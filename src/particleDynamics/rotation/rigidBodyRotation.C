@@ -212,6 +212,22 @@ Foam::vector Foam::rigidBodyRotation::omegaBody
 }
 
 
+Foam::vector Foam::rigidBodyRotation::omegaInertial
+(
+    const quaternion& q,
+    const vector& Lin,
+    const vector& I
+)
+{
+    checkOrientation(q, FUNCTION_NAME);
+    checkMoments(I, FUNCTION_NAME);
+    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
+
+    const tensor R = q.R();
+    return R & vector(cmptDivide(Lin & R, I));
+}
+
+
 Foam::vector Foam::rigidBodyRotation::angularMomentum
 (
     const quaternion& q,

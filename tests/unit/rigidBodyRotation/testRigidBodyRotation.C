@@ -394,6 +394,15 @@ TEST(rigidBodyRotation, AngularMomentumVelocityEnergy)
     const scalar Eref =
         0.5*(I.x()*sqr(0.3) + I.y()*sqr(1.2) + I.z()*sqr(2.5));
     EXPECT_NEAR(RBR::kineticEnergy(q, Lin, I), Eref, 1e-14*Eref);
+
+    // The inertial angular velocity R Omega_p, against the hand-built R,
+    // and identical to toInertial(omegaBody) (the same operations)
+    const vector omegaIn = RBR::omegaInertial(q, Lin, I);
+    EXPECT_LT(mag(omegaIn - (R & omegaP)), 1e-14*mag(omegaP));
+    const vector viaBody = RBR::toInertial(q, RBR::omegaBody(q, Lin, I));
+    EXPECT_EQ(omegaIn.x(), viaBody.x());
+    EXPECT_EQ(omegaIn.y(), viaBody.y());
+    EXPECT_EQ(omegaIn.z(), viaBody.z());
 }
 
 
@@ -775,6 +784,13 @@ TEST(rigidBodyRotation, BadInputIsAnError)
 
     // Non-finite vectors, non-unit or non-finite quaternions
     EXPECT_THROW(RBR::omegaBody(q, vector(nan, 0, 0), I), Foam::error);
+    EXPECT_THROW(RBR::omegaInertial(q, vector(nan, 0, 0), I), Foam::error);
+    EXPECT_THROW(RBR::omegaInertial(q, L, vector(1, 0, 3)), Foam::error);
+    EXPECT_THROW
+    (
+        RBR::omegaInertial(quaternion(2, vector::zero), L, I),
+        Foam::error
+    );
     EXPECT_THROW(RBR::angularMomentum(q, vector(0, inf, 0), I), Foam::error);
     EXPECT_THROW(RBR::omegaBody(quaternion(Zero), L, I), Foam::error);
     EXPECT_THROW(RBR::toBody(quaternion(2, vector::zero), L), Foam::error);
