@@ -203,12 +203,11 @@ Foam::vector Foam::rigidBodyRotation::omegaBody
     const vector& I
 )
 {
-    checkOrientation(q, FUNCTION_NAME);
-    checkMoments(I, FUNCTION_NAME);
-    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
-
     // Principal axes: Lp = diag(I) Omega_p
-    return vector(cmptDivide(Lin & q.R(), I));
+    return vector
+    (
+        cmptDivide(Lin & checkedRotation(q, Lin, I, FUNCTION_NAME), I)
+    );
 }
 
 
@@ -219,11 +218,7 @@ Foam::vector Foam::rigidBodyRotation::omegaInertial
     const vector& I
 )
 {
-    checkOrientation(q, FUNCTION_NAME);
-    checkMoments(I, FUNCTION_NAME);
-    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
-
-    const tensor R = q.R();
+    const tensor R = checkedRotation(q, Lin, I, FUNCTION_NAME);
     return R & vector(cmptDivide(Lin & R, I));
 }
 
@@ -250,11 +245,7 @@ Foam::scalar Foam::rigidBodyRotation::kineticEnergy
     const vector& I
 )
 {
-    checkOrientation(q, FUNCTION_NAME);
-    checkMoments(I, FUNCTION_NAME);
-    checkFinite(Lin, "Angular momentum", FUNCTION_NAME);
-
-    const vector Lp = Lin & q.R();
+    const vector Lp = Lin & checkedRotation(q, Lin, I, FUNCTION_NAME);
     return 0.5*(Lp & vector(cmptDivide(Lp, I)));
 }
 
