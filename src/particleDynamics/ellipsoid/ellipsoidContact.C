@@ -582,7 +582,10 @@ result commonNormalResult
     r.iterations = iterations;
     r.converged = converged;
     r.n = s.m;
-    const scalar hInv1 = 1/s.h1, hInv2 = 1/s.h2;
+    // The converging iteration formed the reciprocals where it formed the
+    // frame (depthFunction::reciprocals)
+    const scalar hInv1 = frame.valid ? s.hInv1 : 1/s.h1;
+    const scalar hInv2 = frame.valid ? s.hInv2 : 1/s.h2;
     r.x1 = e1.centre() + s.w1*hInv1;
     r.x2 = e2.centre() - s.w2*hInv2;
 
