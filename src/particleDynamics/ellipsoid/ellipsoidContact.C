@@ -617,12 +617,26 @@ result commonNormalResult
 // (see "Certified single start" in ellipsoidContact.H)
 enum class certificate { separated, contact, undecided };
 
+// A lower bound of the gap -g > 0 of a separating direction, less the
+// round-off of g (a few eps of the lengths in it; see "Separation
+// certificate" in ellipsoidContact.H)
+scalar certifiedGap(const ellipsoid& e1, const ellipsoid& e2, const scalar g)
+{
+    const vector d = e2.centre() - e1.centre();
+    const scalar L =
+        e1.boundingRadius() + e2.boundingRadius()
+      + mag(d.x()) + mag(d.y()) + mag(d.z());
+    return max(-g - 64*eps*L, scalar(0));
+}
+
+
 certificate certifiedSingleStart
 (
     const ellipsoid& e1,
     const ellipsoid& e2,
     vector& nTrack,
-    result& r
+    result& r,
+    scalar& g
 )
 {
     const depthFunction f(e1, e2);
@@ -638,6 +652,7 @@ certificate certifiedSingleStart
         if (s0.g < 0)
         {
             nTrack = s0.m;
+            g = s0.g;
             return certificate::separated;
         }
     }
@@ -663,6 +678,7 @@ certificate certifiedSingleStart
     if (s.g < 0)
     {
         nTrack = s.m;
+        g = s.g;
         return certificate::separated;
     }
 
@@ -1250,9 +1266,15 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::contact
         return noContact(e1, e2);
     }
     result c;
-    switch (certifiedSingleStart(e1, e2, nTrack, c))
+    scalar g = 0;
+    switch (certifiedSingleStart(e1, e2, nTrack, c, g))
     {
-        case certificate::separated: return noContact(e1, e2);
+        case certificate::separated:
+        {
+            result r = noContact(e1, e2);
+            r.separation = certifiedGap(e1, e2, g);
+            return r;
+        }
         case certificate::contact: return c;
         case certificate::undecided: break;
     }

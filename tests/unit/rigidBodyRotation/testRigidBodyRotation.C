@@ -678,6 +678,42 @@ TEST(rigidBodyRotation, SphereSmallAnglesAgreeWithTheExactRotation)
 }
 
 
+TEST(rigidBodyRotation, TurnAngleBoundIsFourTanOfAQuarterAngle)
+{
+    // q1 = (turn by theta about a random axis) q0, and -q1 (the same
+    // rotation): the bound is 4 tan(theta/4) >= theta, to round-off of the
+    // quaternions' components also for tiny angles
+    Random rnd(7);
+    scalar worst = 0;
+    for (const scalar theta : {1e-13, 1e-9, 1e-6, 1e-3, 0.1, 1.0, 3.0, 3.14})
+    {
+        for (label i = 0; i < 100; ++i)
+        {
+            const quaternion q0 = RBR::fromEulerAngles
+            (
+                6*rnd.sample01<scalar>(), 3*rnd.sample01<scalar>(),
+                6*rnd.sample01<scalar>()
+            );
+            vector axis(Zero);
+            while (mag(axis) < 0.1)
+            {
+                axis = vector(rnd.GaussNormal<vector>());
+            }
+            const quaternion q1 = quaternion(axis/mag(axis), theta)*q0;
+            for (const scalar sign : {1.0, -1.0})
+            {
+                const scalar b = RBR::turnAngleBound(q0, sign*q1);
+                const scalar exact = 4*std::tan(theta/4);
+                worst = max(worst, mag(b - exact)/(1e-15 + exact));
+                EXPECT_GE(b, theta - 1e-15);
+                EXPECT_NEAR(b, exact, 1e-15 + 1e-14*exact);
+            }
+        }
+    }
+    report("turnAngleBound: max |bound - 4 tan(theta/4)|/(1e-15 + 4 tan)", worst);
+}
+
+
 TEST(rigidBodyRotation, TimeReversible)
 {
     const vector I =

@@ -493,6 +493,9 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
         }
     );
 
+    // The pairs' separations are relative to the travel since this build
+    bodies_.restartTravel();
+
     cacheWallFaceBoxes();
     findWallFaces();
 }
@@ -618,6 +621,12 @@ Foam::EllipsoidCollision<CloudType>::listPairGeometry
         histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
      && magSqr(before) > 0 && magSqr(n) > 0;
     dn = lasting ? n - before : vector(Zero);
+
+    // Separated along n: so while the bodies travel less than the gap
+    histories_.apartUntil(k) =
+        c.separation > 0
+      ? bodies_.travel(A) + bodies_.travel(B) + c.separation
+      : 0;
     return c;
 }
 
@@ -743,7 +752,27 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
                 {
                     histories_.direction(k) = Zero;
                     histories_.directionChange(k) = Zero;
+                    histories_.apartUntil(k) = 0;
                 }
+                continue;
+            }
+
+            // Still separated along the tracked direction (the bodies
+            // travelled less than its gap since): what the narrow phase's
+            // first evaluation there would decide, with the same
+            // normalisation of the direction, so the run is bit-identical.
+            // The factor covers the round-off of the travel sums (relative
+            // eps per step since the list's build)
+            const scalar apartUntil = histories_.apartUntil(k);
+            if
+            (
+                apartUntil > 0
+             && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
+              < apartUntil
+            )
+            {
+                vector& n = histories_.direction(k);
+                n = n*(1/mag(n));
                 continue;
             }
             const ellipsoidContact::result c =
@@ -1053,6 +1082,7 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         // forgets them as a restart from this time does, so both continue
         // identically (the next narrow phase starts from the centre line)
         histories_.forgetDirections();
+        bodies_.restartTravel();
     }
     if (referring() || keepRecords_ || writeTime)
     {
