@@ -496,6 +496,14 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     // The pairs' separations are relative to the travel since this build
     bodies_.restartTravel();
 
+    // The bodies' collision-time factors, for the last kicks until the
+    // next build
+    timeFactors_.setSize(bodies_.size());
+    forAll(timeFactors_, i)
+    {
+        timeFactors_[i] = timeFactors(bodies_.parcel(i));
+    }
+
     cacheWallFaceBoxes();
     findWallFaces();
 }
@@ -601,12 +609,6 @@ Foam::EllipsoidCollision<CloudType>::listPairGeometry
     const point& xB
 )
 {
-    // Two spheres: the analytic contact (pairGeometry's for them, which
-    // spheres do not track a direction for)
-    if (A.sphere && B.sphere)
-    {
-        return ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius);
-    }
     vector& n = histories_.direction(k);
 
     // A lasting contact's normal turns smoothly: started from its linear
@@ -745,10 +747,11 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             // Apart, the pair's tracked direction is forgotten: it then
             // depends only on the pair's own history since it came within
             // reach, not on when the list was built
+            const bool spheres = A.sphere && B.sphere;
             if (magSqr(xA - xB) > sqr(A.radius + B.radius))
             {
                 histories_.setTouching(k, false);
-                if (!(A.sphere && B.sphere))
+                if (!spheres)
                 {
                     histories_.direction(k) = Zero;
                     histories_.directionChange(k) = Zero;
@@ -763,20 +766,28 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
             // normalisation of the direction, so the run is bit-identical.
             // The factor covers the round-off of the travel sums (relative
             // eps per step since the list's build)
-            const scalar apartUntil = histories_.apartUntil(k);
-            if
-            (
-                apartUntil > 0
-             && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
-              < apartUntil
-            )
+            if (!spheres)
             {
-                vector& n = histories_.direction(k);
-                n = n*(1/mag(n));
-                continue;
+                const scalar apartUntil = histories_.apartUntil(k);
+                if
+                (
+                    apartUntil > 0
+                 && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
+                  < apartUntil
+                )
+                {
+                    vector& n = histories_.direction(k);
+                    n = n*(1/mag(n));
+                    continue;
+                }
             }
+
+            // Two spheres: the analytic contact (pairGeometry's for them,
+            // which spheres do not track a direction for)
             const ellipsoidContact::result c =
-                listPairGeometry(k, A, xA, B, xB);
+                spheres
+              ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
+              : listPairGeometry(k, A, xA, B, xB);
             if (!c.contact || c.overlap <= 0)
             {
                 histories_.setTouching(k, false);
@@ -1384,16 +1395,37 @@ Foam::EllipsoidCollision<CloudType>::referralNeighbours() const
 
 
 template<class CloudType>
-inline void Foam::EllipsoidCollision<CloudType>::addCollisionTime
-(
-    const parcelType& p,
-    collisionTimeMinima& m
-) const
+inline typename Foam::EllipsoidCollision<CloudType>::collisionTimeFactors
+Foam::EllipsoidCollision<CloudType>::timeFactors(const parcelType& p) const
 {
     // Worst case in the cloud: the fastest parcel hitting a copy of
     // itself head-on (m* = m/2, relative speed 2|U|) at its sharpest tip
     // (radius of curvature c^2/a for semi-axes a >= b >= c, R* = R/2);
     // a wall contact (m* = m, R* = R, speed |U|) lasts longer
+    const label material = p.material();
+    const vector& s = p.semiAxes();
+    const scalar c = cmptMin(s);
+    const scalar Rtip = sqr(c)/cmptMax(s);
+    const scalar mByE2 = sqr(0.5*p.mass()/selfEstar_[material]);
+
+    // Rayleigh time step, Rasera Eq. (13), for the report
+    return
+    {
+        mByE2,
+        mByE2/(0.5*Rtip),
+        sqr(c)*p.rho()/rayleighFactorSqr_[material]
+    };
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::addCollisionTime
+(
+    const parcelType& p,
+    const collisionTimeFactors& k,
+    collisionTimeMinima& m
+) const
+{
     // Hertz collision duration (Johnson 1985)
     //     t_c = 2.868 (m*^2/(R* E*^2 v))^(1/5),
     // minimised through its monotonic argument: a parcel's in double as
@@ -1401,32 +1433,25 @@ inline void Foam::EllipsoidCollision<CloudType>::addCollisionTime
     // parcel), else through its logarithm (the heavy, soft or resting
     // parcels of the accepted ranges, inputLimits.H, overflow it)
     auto normal = [](const scalar x) { return x > 1e-290 && x < 1e290; };
-    const label material = p.material();
-    const vector& s = p.semiAxes();
-    const scalar c = cmptMin(s);
-    const scalar Rtip = sqr(c)/cmptMax(s);
-    const scalar mStar = 0.5*p.mass();
     const scalar v = max(2*mag(p.U()), VSMALL);
-
-    const scalar mByE2 = sqr(mStar/selfEstar_[material]);
-    const scalar arg = mByE2/(0.5*Rtip)/v;
-    if (normal(mByE2) && normal(arg))
+    const scalar arg = k.tcFactor/v;
+    if (normal(k.mByE2) && normal(arg))
     {
         m.tcArg = min(m.tcArg, arg);
     }
     else
     {
+        const label material = p.material();
+        const vector& s = p.semiAxes();
+        const scalar Rtip = sqr(cmptMin(s))/cmptMax(s);
         m.logTcArg = min
         (
             m.logTcArg,
-            2*(Foam::log(mStar) - Foam::log(selfEstar_[material]))
+            2*(Foam::log(0.5*p.mass()) - Foam::log(selfEstar_[material]))
           - Foam::log(0.5*Rtip) - Foam::log(v)
         );
     }
-
-    // Rayleigh time step, Rasera Eq. (13), for the report
-    m.rayleighSqr =
-        min(m.rayleighSqr, sqr(c)*p.rho()/rayleighFactorSqr_[material]);
+    m.rayleighSqr = min(m.rayleighSqr, k.rayleighSqr);
 }
 
 
