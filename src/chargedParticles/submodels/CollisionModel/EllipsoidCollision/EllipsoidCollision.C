@@ -1395,25 +1395,38 @@ Foam::EllipsoidCollision<CloudType>::referralNeighbours() const
 
 
 template<class CloudType>
-inline typename Foam::EllipsoidCollision<CloudType>::collisionTimeFactors
-Foam::EllipsoidCollision<CloudType>::timeFactors(const parcelType& p) const
+inline void Foam::EllipsoidCollision<CloudType>::selfContact
+(
+    const parcelType& p,
+    scalar& mStar,
+    scalar& RStar
+) const
 {
     // Worst case in the cloud: the fastest parcel hitting a copy of
     // itself head-on (m* = m/2, relative speed 2|U|) at its sharpest tip
     // (radius of curvature c^2/a for semi-axes a >= b >= c, R* = R/2);
     // a wall contact (m* = m, R* = R, speed |U|) lasts longer
-    const label material = p.material();
     const vector& s = p.semiAxes();
-    const scalar c = cmptMin(s);
-    const scalar Rtip = sqr(c)/cmptMax(s);
-    const scalar mByE2 = sqr(0.5*p.mass()/selfEstar_[material]);
+    mStar = 0.5*p.mass();
+    RStar = 0.5*(sqr(cmptMin(s))/cmptMax(s));
+}
+
+
+template<class CloudType>
+inline typename Foam::EllipsoidCollision<CloudType>::collisionTimeFactors
+Foam::EllipsoidCollision<CloudType>::timeFactors(const parcelType& p) const
+{
+    const label material = p.material();
+    scalar mStar, RStar;
+    selfContact(p, mStar, RStar);
+    const scalar mByE2 = sqr(mStar/selfEstar_[material]);
 
     // Rayleigh time step, Rasera Eq. (13), for the report
     return
     {
         mByE2,
-        mByE2/(0.5*Rtip),
-        sqr(c)*p.rho()/rayleighFactorSqr_[material]
+        mByE2/RStar,
+        sqr(cmptMin(p.semiAxes()))*p.rho()/rayleighFactorSqr_[material]
     };
 }
 
@@ -1441,14 +1454,13 @@ inline void Foam::EllipsoidCollision<CloudType>::addCollisionTime
     }
     else
     {
-        const label material = p.material();
-        const vector& s = p.semiAxes();
-        const scalar Rtip = sqr(cmptMin(s))/cmptMax(s);
+        scalar mStar, RStar;
+        selfContact(p, mStar, RStar);
         m.logTcArg = min
         (
             m.logTcArg,
-            2*(Foam::log(0.5*p.mass()) - Foam::log(selfEstar_[material]))
-          - Foam::log(0.5*Rtip) - Foam::log(v)
+            2*(Foam::log(mStar) - Foam::log(selfEstar_[p.material()]))
+          - Foam::log(RStar) - Foam::log(v)
         );
     }
     m.rayleighSqr = min(m.rayleighSqr, k.rayleighSqr);
