@@ -1309,7 +1309,7 @@ Foam::ellipsoidContact::reducedRadiusGradient
 }
 
 
-Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
+Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlanePoint
 (
     const ellipsoid& e,
     const point& p0,
@@ -1329,19 +1329,32 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
             << "Plane point " << p0 << " is not finite" << exit(FatalError);
     }
 
-    // Deepest point below the plane: the support point along -nOut
+    // Deepest point below the plane: the support point along n = -nOut
+    // (S^-1 n and the support distance h formed once: those along nOut
+    // are their negative and the same h, exactly)
     result r;
     r.used = method::plane;
     r.n = -nOut;
-    r.x1 = e.support(-nOut);
+    const supportAlong sup(e, r.n);
+    r.x1 = e.centre() + sup.Mn/sup.h;
 
     // Depth from the centre (support distance minus the centre's height)
     // rather than from x1: no cancellation of large coordinates
-    const scalar depth = e.supportDistance(nOut) - ((e.centre() - p0) & nOut);
+    const scalar depth = sup.h - ((e.centre() - p0) & nOut);
 
     r.contact = depth > 0;
     r.overlap = max(depth, scalar(0));
     r.x2 = r.x1 + depth*nOut;
+    return r;
+}
+
+
+void Foam::ellipsoidContact::addPlaneCurvature
+(
+    const ellipsoid& e,
+    result& r
+)
+{
     if (r.contact)
     {
         // Eq. (37) at x1 as a function of the normal, which is fixed: only
@@ -1352,6 +1365,18 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
         r.reducedRadius = 1/K;
         r.gradR.rotation1 = sqr(r.reducedRadius)*(r.n ^ gradK);
     }
+}
+
+
+Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlane
+(
+    const ellipsoid& e,
+    const point& p0,
+    const vector& nOut
+)
+{
+    result r = ellipsoidPlanePoint(e, p0, nOut);
+    addPlaneCurvature(e, r);
     return r;
 }
 

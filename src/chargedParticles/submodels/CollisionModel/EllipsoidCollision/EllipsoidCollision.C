@@ -916,10 +916,12 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
         return;
     }
 
-    const ellipsoidContact::result c =
+    // An ellipsoid's curvature only once the contact belongs to this face
+    // (most evaluations are of coplanar neighbours of the face in contact)
+    ellipsoidContact::result c =
         b.sphere
       ? ellipsoidContact::spherePlane(xp, r, fc, -nOutOfDomain)
-      : ellipsoidContact::ellipsoidPlane
+      : ellipsoidContact::ellipsoidPlanePoint
         (
             bodies_.shell(b), fc, -nOutOfDomain
         );
@@ -950,6 +952,10 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
         {
             return;
         }
+    }
+    if (!b.sphere)
+    {
+        ellipsoidContact::addPlaneCurvature(bodies_.shell(b), c);
     }
     contactPoints.append(c.x2);
     ++nWallContacts_;
