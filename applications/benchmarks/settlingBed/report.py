@@ -41,8 +41,10 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         f"kernel {m['kernel']}; load average {res['loadStart']} at the start, {res['loadEnd']} at the end "
         "(the machine was shared with other work; see the notes on timing)")
     add(f"- software: Debian packages openfoam {m['openfoam']}, liggghts {m['liggghts']}, g++ {m['gcc']}; "
-        f"chargedFoam at commit {m['chargedFoamCommit']} (binary and libraries copied to the run "
-        "folder before the runs)")
+        f"chargedFoam at commit {m['chargedFoamCommit']}, built "
+        + (f"with `{m['buildFlags']}`" if m.get("buildFlags") else "for the generic x86-64")
+        + " (binary and libraries copied to the run folder before the runs; Debian's LIGGGHTS and "
+        "OpenFOAM are built for the generic x86-64)")
     add("")
     add("### Results")
     add("")

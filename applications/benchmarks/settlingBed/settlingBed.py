@@ -284,6 +284,8 @@ def machine_info():
                 kernel=platform.release(), openfoam=version("openfoam"),
                 liggghts=version("liggghts"), gcc=version("g++"),
                 chargedFoamCommit=head,
+                # etc/bashrc's choice of instruction set for the project's builds
+                buildFlags=os.environ.get("FOAM_EXTRA_CXXFLAGS", ""),
                 date=datetime.datetime.now().strftime("%Y-%m-%d %H:%M"))
 
 
