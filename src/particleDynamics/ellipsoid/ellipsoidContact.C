@@ -1336,6 +1336,14 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlanePoint
     r.used = method::plane;
     r.n = -nOut;
     const supportAlong sup(e, r.n);
+    if (!(sup.h > 0) || !std::isfinite(sup.h))
+    {
+        FatalErrorInFunction
+            << "Support point of the ellipsoid " << e.centre()
+            << " along " << r.n << " is undefined (support distance "
+            << sup.h << "): its shape or orientation is not finite"
+            << exit(FatalError);
+    }
     r.x1 = e.centre() + sup.Mn/sup.h;
 
     // Depth from the centre (support distance minus the centre's height)
