@@ -294,6 +294,13 @@ Foam::scalar Foam::ellipsoid::gaussianCurvature(const point& x) const
 
 Foam::point Foam::ellipsoid::support(const vector& m) const
 {
+    scalar h;
+    return support(m, h);
+}
+
+
+Foam::point Foam::ellipsoid::support(const vector& m, scalar& h) const
+{
     const vector w = Sinv_ & m;
     const scalar h2 = m & w;
     if (!(h2 > 0) || !std::isfinite(h2))
@@ -303,7 +310,8 @@ Foam::point Foam::ellipsoid::support(const vector& m) const
             << " is undefined: the direction must be finite and non-zero"
             << exit(FatalError);
     }
-    return centre_ + w/Foam::sqrt(h2);
+    h = Foam::sqrt(h2);
+    return centre_ + w/h;
 }
 
 

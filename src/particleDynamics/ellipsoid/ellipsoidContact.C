@@ -1329,26 +1329,17 @@ Foam::ellipsoidContact::result Foam::ellipsoidContact::ellipsoidPlanePoint
             << "Plane point " << p0 << " is not finite" << exit(FatalError);
     }
 
-    // Deepest point below the plane: the support point along n = -nOut
-    // (S^-1 n and the support distance h formed once: those along nOut
-    // are their negative and the same h, exactly)
+    // Deepest point below the plane: the support point along n = -nOut,
+    // with its support distance h (that along nOut is the same h, exactly)
     result r;
     r.used = method::plane;
     r.n = -nOut;
-    const supportAlong sup(e, r.n);
-    if (!(sup.h > 0) || !std::isfinite(sup.h))
-    {
-        FatalErrorInFunction
-            << "Support point of the ellipsoid " << e.centre()
-            << " along " << r.n << " is undefined (support distance "
-            << sup.h << "): its shape or orientation is not finite"
-            << exit(FatalError);
-    }
-    r.x1 = e.centre() + sup.Mn/sup.h;
+    scalar h;
+    r.x1 = e.support(r.n, h);
 
     // Depth from the centre (support distance minus the centre's height)
     // rather than from x1: no cancellation of large coordinates
-    const scalar depth = sup.h - ((e.centre() - p0) & nOut);
+    const scalar depth = h - ((e.centre() - p0) & nOut);
 
     r.contact = depth > 0;
     r.overlap = max(depth, scalar(0));
