@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ellipsoid.H"
+#include "rigidBodyRotation.H"
 #include "error.H"
 #include "Ostream.H"
 #include "mathematicalConstants.H"
@@ -20,25 +21,6 @@ bool finite(const vector& v)
 {
     return
         std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
-}
-
-// R diag(d) R^T for a rotation tensor R
-symmTensor rotateDiagonal(const tensor& R, const vector& d)
-{
-    tensor S(Zero);
-    for (direction i = 0; i < 3; ++i)
-    {
-        for (direction j = 0; j < 3; ++j)
-        {
-            scalar s = 0;
-            for (direction k = 0; k < 3; ++k)
-            {
-                s += R(i, k)*d[k]*R(j, k);
-            }
-            S(i, j) = s;
-        }
-    }
-    return symm(S);
 }
 
 // Body-frame point scaled along its ray onto the surface
@@ -111,12 +93,12 @@ void Foam::ellipsoid::init(const bool checkRotation)
     }
 
     const vector& ax = semiAxes_;
-    S_ = rotateDiagonal
+    S_ = rigidBodyRotation::rotateDiagonal
     (
         R_,
         vector(1/sqr(ax.x()), 1/sqr(ax.y()), 1/sqr(ax.z()))
     );
-    Sinv_ = rotateDiagonal(R_, cmptMultiply(ax, ax));
+    Sinv_ = rigidBodyRotation::rotateDiagonal(R_, cmptMultiply(ax, ax));
 }
 
 

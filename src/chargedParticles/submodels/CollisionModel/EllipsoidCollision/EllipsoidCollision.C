@@ -237,14 +237,18 @@ void Foam::EllipsoidCollision<CloudType>::checkBufferLayer
 
 template<class CloudType>
 typename Foam::EllipsoidCollision<CloudType>::contactBody
-Foam::EllipsoidCollision<CloudType>::body(parcelType& p) const
+Foam::EllipsoidCollision<CloudType>::body
+(
+    parcelType& p,
+    const vector& omega
+) const
 {
     const scalar dBl = bufferLayer(p);
     return contactBody
     {
         &p,
         p.U(),
-        p.omega(),
+        omega,
         p.mass(),
         cmptMax(p.semiAxes()) + dBl,
         dBl,
