@@ -161,7 +161,7 @@ void curvatureAlong
 // applied to t: (S^-1 t)/h - (S^-1 n)(S^-1 n . t)/h^3 (even in n);
 // S^-1 n and 1/h from the body's supportAlong along n (products with the
 // reciprocals: a division costs several multiplications, and D is
-// applied six times per contact)
+// applied four times per contact)
 class radiiOfCurvature
 {
     const symmTensor& Minv_;
@@ -221,9 +221,12 @@ radiusGradient radiusGradientAndCurvature
     {
         tangents(n, t1, t2);
     }
+    // D is linear: D(w) below from D(t1), D(t2), as w lies in the
+    // tangent plane (two mat-vecs fewer)
     const radiiOfCurvature D1(e1, sup1), D2(e2, sup2);
-    const vector Dt1 = D1(t1) + D2(t1);
-    const vector Dt2 = D1(t2) + D2(t2);
+    const vector D1t1 = D1(t1), D1t2 = D1(t2), D2t1 = D2(t1), D2t2 = D2(t2);
+    const vector Dt1 = D1t1 + D2t1;
+    const vector Dt2 = D1t2 + D2t2;
     const scalar H11 = (t1 & Dt1) - r.overlap;
     const scalar H22 = (t2 & Dt2) - r.overlap;
     const scalar H12 = 0.5*((t1 & Dt2) + (t2 & Dt1));
@@ -237,7 +240,8 @@ radiusGradient radiusGradientAndCurvature
         return d;
     }
     const scalar G1 = t1 & G, G2 = t2 & G;
-    const vector w = ((H22*G1 - H12*G2)/det)*t1 + ((H11*G2 - H12*G1)/det)*t2;
+    const scalar w1 = (H22*G1 - H12*G2)/det, w2 = (H11*G2 - H12*G1)/det;
+    const vector w = w1*t1 + w2*t2;
 
     // R = 1/(K1 + K2) at the common-normal points (the contact's
     // reducedRadius, here from the same K(n) as its gradient)
@@ -246,8 +250,8 @@ radiusGradient radiusGradientAndCurvature
     const vector r2 = r.x2 - e2.centre();
     d.centre1 = R2*w;
     d.centre2 = -R2*w;
-    d.rotation1 = -R2*((n ^ D1(w)) - (r1 ^ w) - (n ^ gradK1));
-    d.rotation2 = -R2*((n ^ D2(w)) + (r2 ^ w) - (n ^ gradK2));
+    d.rotation1 = -R2*((n ^ (w1*D1t1 + w2*D1t2)) - (r1 ^ w) - (n ^ gradK1));
+    d.rotation2 = -R2*((n ^ (w1*D2t1 + w2*D2t2)) + (r2 ^ w) - (n ^ gradK2));
     return d;
 }
 
