@@ -489,7 +489,7 @@ def scale_study(runs, env, sizes, repeats):
     timed windows of cfSpheres and LIGGGHTS in turns, as the benchmark's.
     Memory: the peak resident size of each window's process."""
     full = CONFIGS["full"]
-    out = dict(sizes=sizes, rows=[])
+    out = dict(sizes=sizes, machine=machine_info(), rows=[])
     for n in sizes:
         cfg = dict(full, n=n, base=full["base"]*math.sqrt(n/full["n"]), repeats=repeats)
         res = {}
