@@ -491,7 +491,12 @@ def scale_study(runs, env, sizes, repeats):
     full = CONFIGS["full"]
     out = dict(sizes=sizes, machine=machine_info(), rows=[])
     for n in sizes:
-        cfg = dict(full, n=n, base=full["base"]*math.sqrt(n/full["n"]), repeats=repeats)
+        # at least the benchmark's particle-steps per window: a window of 10^3
+        # spheres and 1000 steps lasts half a second, shorter than the
+        # machine's load changes
+        window = max(full["window"], int(round(full["window"]*full["n"]/n)))
+        cfg = dict(full, n=n, base=full["base"]*math.sqrt(n/full["n"]), repeats=repeats,
+                   window=window)
         res = {}
         log(f"[scale] N = {n}, floor {cfg['base']*1e3:.1f} mm")
         sphere_benchmark(cfg, os.path.join(runs, "scale", f"n{n}"), env, ["cfSpheres", "liggghts"], res)
@@ -514,13 +519,14 @@ def scale_table(sc):
     rows = sc["rows"]
     ref = next((r for r in rows if r["n"] == CONFIGS["full"]["n"]), rows[0])
     us = lambda r, c: 1e6/r[c]["rate"]
-    out = ["| N | floor [mm] | contacts per particle | chargedFoam [us per particle-step] | "
+    out = ["| N | floor [mm] | timed steps | contacts per particle | chargedFoam [us per particle-step] | "
            f"/ N = {ref['n']} | LIGGGHTS [us per particle-step] | / N = {ref['n']} | "
            "chargedFoam / LIGGGHTS (median of the pairs) | chargedFoam peak resident [MB] | "
            "LIGGGHTS peak resident [MB] |",
-           "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"]
+           "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"]
     for r in rows:
-        out.append(f"| {r['n']} | {r['base']*1e3:.1f} | {r['cfSpheres']['contactsPerParticle']:.2f} | "
+        out.append(f"| {r['n']} | {r['base']*1e3:.1f} | {r['window']} | "
+                   f"{r['cfSpheres']['contactsPerParticle']:.2f} | "
                    f"{us(r, 'cfSpheres'):.3g} | {us(r, 'cfSpheres')/us(ref, 'cfSpheres'):.2f} | "
                    f"{us(r, 'liggghts'):.3g} | {us(r, 'liggghts')/us(ref, 'liggghts'):.2f} | "
                    f"{np.median(r['pairRatios']):.2f} | {r['cfSpheres']['peakRss']/1e6:.0f} | "
