@@ -15,12 +15,20 @@
       - the rolling torque never reverses the relative spin;
       - selection: the dictionary entries pick the parts, a wall law
         takes the pairs' parts unless it names its own, unknown names and
-        out-of-range constants are errors.
+        out-of-range constants are errors;
+      - the wall-contact histories of the flat store (wallHistories) are
+        those of OpenFOAM's own per-parcel record lists
+        (CollisionRecordList: matchWallRecord, update) in random sequences
+        of contacts, across rebuilds that reorder, drop and add bodies.
 
     Measured numbers are printed as "[ measured ] ..." lines.
 \*---------------------------------------------------------------------------*/
 
 #include "contactLaw.H"
+#include "wallHistories.H"
+#include "labelField.H"
+#include "vectorField.H"
+#include "CollisionRecordList.H"
 #include "Random.H"
 #include "error.H"
 
@@ -308,6 +316,127 @@ TEST(contactLaw, selectionAndErrors)
         pairLaw.properties(1e8, 0.3, 1e8, 0.3, badRolling, 0.5, 0.3, 0),
         Foam::IOerror
     );
+}
+
+// The flat store against OpenFOAM's per-parcel record lists: each body
+// touches walls along a random subset of six directions (jittered, so
+// that a contact matches its record of the step before), its tangential
+// history accumulated in the record; every 7 steps the bodies near walls
+// are rebuilt (reordered, some dropped, some new with records of their
+// own, as read on a restart)
+TEST(wallHistories, matchOpenFOAMsRecordLists)
+{
+    typedef CollisionRecordList<vector, vector> recordList;
+    typedef WallCollisionRecord<vector> record;
+    Random rnd(1234);
+    const label nBodies = 40;
+    const scalar r = 1e-3;
+    const vector axes[6] =
+    {
+        vector(1, 0, 0), vector(-1, 0, 0), vector(0, 1, 0),
+        vector(0, -1, 0), vector(0, 0, 1), vector(0, 0, -1)
+    };
+
+    List<recordList> lists(nBodies);
+    wallHistories<record> store;
+    labelList near;             // bodies in the store's runs, in run order
+    label nMatched = 0, nCompared = 0;
+    for (label step = 0; step < 200; ++step)
+    {
+        if (step % 7 == 0)
+        {
+            // Rebuild: a random order of a random subset; bodies not in the
+            // store before bring their own records (none for most)
+            labelList runOf(nBodies, -1);
+            forAll(near, m)
+            {
+                runOf[near[m]] = m;
+            }
+            DynamicList<label> next;
+            for (label b = 0; b < nBodies; ++b)
+            {
+                if (rnd.sample01<scalar>() < 0.7)
+                {
+                    next.append(b);
+                }
+            }
+            for (label k = next.size() - 1; k > 0; --k)
+            {
+                std::swap(next[k], next[rnd.position<label>(0, k)]);
+            }
+            for (const label b : next)
+            {
+                if (runOf[b] >= 0)
+                {
+                    store.append(runOf[b]);
+                    continue;
+                }
+                if (rnd.sample01<scalar>() < 0.3)
+                {
+                    // Records of its own (unaccessed, as read)
+                    const vector& axis = axes[rnd.position<label>(0, 5)];
+                    lists[b].matchWallRecord(0.9*r*axis, r).collisionData() =
+                        rnd.sample01<vector>();
+                    lists[b].update();
+                }
+                store.append(lists[b].wallRecords());
+            }
+            store.endStep();
+            near = next;
+        }
+
+        forAll(near, m)
+        {
+            const label b = near[m];
+            store.open(m);
+            for (const vector& axis : axes)
+            {
+                if (rnd.sample01<scalar>() < 0.5)
+                {
+                    continue;
+                }
+                const vector jitter =
+                    0.05*(rnd.sample01<vector>() - 0.5*vector::one);
+                const vector pRel = 0.9*r*(axis + jitter)/mag(axis + jitter);
+                const vector dXi = rnd.sample01<vector>();
+                record& a = store.match(pRel, r);
+                record& o = lists[b].matchWallRecord(pRel, r);
+                nMatched += mag(o.collisionData()) > 0;
+                a.collisionData() += dXi;
+                o.collisionData() += dXi;
+            }
+            store.close();
+            lists[b].update();
+        }
+        store.endStep();
+
+        forAll(near, m)
+        {
+            const UList<record>& ours = store.run(m);
+            const auto& theirs = lists[near[m]].wallRecords();
+            ASSERT_EQ(ours.size(), theirs.size()) << "step " << step;
+            forAll(ours, k)
+            {
+                EXPECT_EQ(ours[k].pRel(), theirs[k].pRel());
+                EXPECT_EQ(ours[k].collisionData(), theirs[k].collisionData());
+                EXPECT_FALSE(ours[k].accessed());
+                ++nCompared;
+            }
+        }
+
+        // Bodies without walls in reach: their contacts ended (their
+        // records cleared, as findWallFaces does)
+        for (label b = 0; b < nBodies; ++b)
+        {
+            if (!near.found(b))
+            {
+                lists[b] = recordList();
+            }
+        }
+    }
+    report("wallHistories: records compared with OpenFOAM's", nCompared);
+    report("wallHistories: contacts that continued a history", nMatched);
+    EXPECT_GT(nMatched, 1000);
 }
 
 

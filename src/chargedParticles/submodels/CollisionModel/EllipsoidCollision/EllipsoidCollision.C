@@ -20,27 +20,6 @@
 namespace
 {
 
-//- Keep the accessed records (marked unaccessed again) in their order
-template<class Record>
-void keepAccessedRecords(Foam::DynamicList<Record>& records)
-{
-    Foam::label n = 0;
-    forAll(records, i)
-    {
-        if (records[i].accessed())
-        {
-            records[i].setUnaccessed();
-            if (n != i)
-            {
-                records[n] = records[i];
-            }
-            ++n;
-        }
-    }
-    records.setSize(n);     // a DynamicList keeps its capacity
-}
-
-
 //- The record lists of a parcel, to change in place. They belong to the
 //  (non-const) parcel; CollisionRecordList only has const accessors.
 template<class Records>
@@ -376,7 +355,10 @@ void Foam::EllipsoidCollision<CloudType>::cacheWallFaceBoxes()
 
 
 template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::findWallFaces()
+void Foam::EllipsoidCollision<CloudType>::findWallFaces
+(
+    const labelList& oldIndex
+)
 {
     // Wall faces in reach: those of the interaction list of the parcel's
     // cell whose bounding box comes within r + skin. Complete while the
@@ -389,6 +371,15 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
     const label n = bodies_.size();
     const scalar skin = list_.skin();
     const labelListList& directWallFaces = il_.dwfil();
+
+    // The wall histories' run of each body at the last build (-1: none)
+    const bool store = !referring();
+    labelList oldRun(wallParcels_.size() ? wallParcels_.last() + 1 : 0, -1);
+    forAll(wallParcels_, m)
+    {
+        oldRun[wallParcels_[m]] = m;
+    }
+
     wallStart_.setSize(n + 1);
     wallStart_[0] = 0;
     wallFaces_.clear();
@@ -439,13 +430,40 @@ void Foam::EllipsoidCollision<CloudType>::findWallFaces()
         if (wallStart_[i + 1] > wallStart_[i])
         {
             wallParcels_.append(i);
+
+            // Its wall histories: those of its run at the last build, or
+            // its records if it was not listed then (read, injected); none
+            // if it had no wall in reach
+            if (store)
+            {
+                const label iOld = oldIndex[i];
+                if (iOld < 0)
+                {
+                    wallHistories_.append(p.collisionRecords().wallRecords());
+                }
+                else if (iOld < oldRun.size() && oldRun[iOld] >= 0)
+                {
+                    wallHistories_.append(oldRun[iOld]);
+                }
+                else
+                {
+                    wallHistories_.append
+                    (
+                        UList<WallCollisionRecord<vector>>()
+                    );
+                }
+            }
         }
-        else if (!referring())
+        else if (store)
         {
             // No wall in reach: a wall contact of the last step has
             // ended (in parallel all records are renewed every step)
             mutableWallRecords(p.collisionRecords()).clear();
         }
+    }
+    if (store)
+    {
+        wallHistories_.endStep();
     }
 }
 
@@ -509,7 +527,7 @@ void Foam::EllipsoidCollision<CloudType>::buildNeighbourList()
     }
 
     cacheWallFaceBoxes();
-    findWallFaces();
+    findWallFaces(oldIndex);
 }
 
 
@@ -973,7 +991,11 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
     const point xc = 0.5*(c.x1 + c.x2);
     const vector vRel = pointVelocity(b.U, b.omega, xp, xc);
     vector& xi =
-        p.collisionRecords().matchWallRecord(xc - xp, r).collisionData();
+        (
+            referring()
+          ? p.collisionRecords().matchWallRecord(xc - xp, r)
+          : wallHistories_.match(xc - xp, r)
+        ).collisionData();
 
     const contactProperties& law = pw_[b.material];
     scalar dUdR;
@@ -1030,6 +1052,10 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
     {
         const label i = allParcels ? m : wallParcels_[m];
         contactPoints.clear();
+        if (!allParcels)
+        {
+            wallHistories_.open(m);
+        }
 
         for (label k = wallStart_[i]; k < wallStart_[i + 1]; ++k)
         {
@@ -1072,6 +1098,14 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 );
             }
         }
+        else
+        {
+            wallHistories_.close();
+        }
+    }
+    if (!allParcels)
+    {
+        wallHistories_.endStep();
     }
 }
 
@@ -1079,23 +1113,12 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::postInteraction()
 {
-    // Forget the history of contacts that ended: what
-    // CollisionRecordList::update() does, in place (update() copies both
-    // record lists into new ones for every parcel and step: two
-    // allocations each, 6 % of a settled bed of spheres)
-    auto compact = [](parcelType& p, const bool pairs)
-    {
-        if (pairs)
-        {
-            keepAccessedRecords(mutablePairRecords(p.collisionRecords()));
-        }
-        keepAccessedRecords(mutableWallRecords(p.collisionRecords()));
-    };
-
-    // The pair histories live in the neighbour list. The parcels' records
+    // The pair histories live in the neighbour list, the wall histories
+    // (serial without cyclics) in wallHistories_. The parcels' records
     // are written when they are read: every step in parallel and with
-    // cyclics (parcels change processor, referred pairs use the records)
-    // or when a submodel asks for them, otherwise at write time (restart)
+    // cyclics (parcels change processor, referred pairs use the records),
+    // the pairs' also when a submodel asks for them, otherwise at write
+    // time (restart)
     const bool writeTime = this->owner().mesh().time().writeTime();
     if (writeTime)
     {
@@ -1105,20 +1128,30 @@ void Foam::EllipsoidCollision<CloudType>::postInteraction()
         histories_.forgetDirections();
         bodies_.restartTravel();
     }
-    if (referring() || keepRecords_ || writeTime)
+
+    // Records written: those of contacts that ended forgotten, as
+    // CollisionRecordList::update() does, in place (update() copies both
+    // record lists into new ones for every parcel and step: two
+    // allocations each, 6 % of a settled bed of spheres)
+    const bool referred = referring();
+    if (referred || keepRecords_ || writeTime)
     {
         writePairRecords();
         for (parcelType* p : bodies_.parcels())
         {
-            compact(*p, true);
+            keepAccessedRecords(mutablePairRecords(p->collisionRecords()));
+            if (referred)
+            {
+                keepAccessedRecords(mutableWallRecords(p->collisionRecords()));
+            }
         }
     }
-    else
+    if (!referred && writeTime)
     {
-        // Wall records: only parcels with walls in reach have any
-        for (const label i : wallParcels_)
+        forAll(wallParcels_, m)
         {
-            compact(bodies_.parcel(i), false);
+            parcelType& p = bodies_.parcel(wallParcels_[m]);
+            mutableWallRecords(p.collisionRecords()) = wallHistories_.run(m);
         }
     }
 
@@ -1326,6 +1359,7 @@ Foam::EllipsoidCollision<CloudType>::EllipsoidCollision
     wallStart_(),
     wallFaces_(),
     wallParcels_(),
+    wallHistories_(),
     nPairSides_(0),
     nWallContacts_(0),
     cellPositions_(),
