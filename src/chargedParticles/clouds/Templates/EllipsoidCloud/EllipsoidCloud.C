@@ -21,6 +21,29 @@
 
 #include <algorithm>
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Ask for an object's cache lines ahead of its use. A pass over the cloud
+//  walks a linked list of parcels of about ten lines each: unasked, each
+//  parcel waits for memory (in the last kick's loop most of the time sat
+//  on the first loads of the next parcel). A compiler builtin: no library
+//  gives a prefetch, and it never faults
+template<class Type>
+inline void prefetch(const Type* object)
+{
+    const char* bytes = reinterpret_cast<const char*>(object);
+    for (std::size_t b = 0; b < sizeof(Type); b += 64)
+    {
+        __builtin_prefetch(bytes + b);
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
@@ -54,12 +77,20 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
         // fractions folded into the move pass (a pass over a large cloud
         // is a walk through memory: 4 % of the step at 10^5 parcels).
         // Cloud::move also drops its stored global positions, which only
-        // a mesh change stores and reads at once (autoMap)
+        // a mesh change stores and reads at once (autoMap). The next
+        // parcel is asked for as this one moves (prefetch), and the moved
+        // parcels are listed for the last kick's loop
         td.switchProcessor = false;
+        moved_.clear();
         for (parcelType& p : *this)
         {
+            prefetch(static_cast<const parcelType*>(p.next_));
             p.stepFraction() = 0;
-            if (!p.move(cloud, td, deltaT))
+            if (p.move(cloud, td, deltaT))
+            {
+                moved_.append(&p);
+            }
+            else
             {
                 this->deleteParticle(p);
             }
@@ -90,22 +121,41 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     td.switchProcessor = false;
     contactModelType* kicked =
         this->collision().active() ? this->contactModel() : nullptr;
+    auto kick = [&cloud, kicked, deltaT](parcelType& p)
+    {
+        p.lastKick(cloud, deltaT);
+        if (kicked)
+        {
+            kicked->parcelKicked(p);
+        }
+    };
     if (kicked)
     {
         kicked->beginKicks();
-        for (parcelType& p : *this)
+    }
+    if (!Pstream::parRun() && moved_.size() == this->size())
+    {
+        // In cloud order, the parcel four ahead asked for
+        const label n = moved_.size();
+        for (label k = 0; k < n; ++k)
         {
-            p.lastKick(cloud, deltaT);
-            kicked->parcelKicked(p);
+            if (k + 4 < n)
+            {
+                prefetch(moved_[k + 4]);
+            }
+            kick(*moved_[k]);
         }
-        kicked->endKicks();
     }
     else
     {
         for (parcelType& p : *this)
         {
-            p.lastKick(cloud, deltaT);
+            kick(p);
         }
+    }
+    if (kicked)
+    {
+        kicked->endKicks();
     }
 }
 
