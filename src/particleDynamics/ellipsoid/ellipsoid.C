@@ -128,16 +128,8 @@ Foam::ellipsoid::ellipsoid
 :
     semiAxes_(semiAxes),
     centre_(centre),
-    R_(tensor::I)
+    R_(rotation(q))
 {
-    const scalar m = Foam::sqrt(sqr(q.w()) + magSqr(q.v()));
-    if (!(m > 0) || !std::isfinite(m))
-    {
-        FatalErrorInFunction
-            << "Ellipsoid orientation quaternion " << q
-            << " is zero or not finite" << exit(FatalError);
-    }
-    R_ = quaternion(q.w()/m, q.v()/m).R();
     init(false);
 }
 
@@ -153,6 +145,19 @@ Foam::ellipsoid::ellipsoid(const scalar radius, const point& centre)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tensor Foam::ellipsoid::rotation(const quaternion& q)
+{
+    const scalar m = Foam::sqrt(sqr(q.w()) + magSqr(q.v()));
+    if (!(m > 0) || !std::isfinite(m))
+    {
+        FatalErrorInFunction
+            << "Ellipsoid orientation quaternion " << q
+            << " is zero or not finite" << exit(FatalError);
+    }
+    return quaternion(q.w()/m, q.v()/m).R();
+}
+
 
 Foam::scalar Foam::ellipsoid::surfaceArea(const vector& semiAxes)
 {
