@@ -13,6 +13,15 @@ def built(m):
             + (f"with `{m['buildFlags']}`" if m.get("buildFlags") else "for the generic x86-64"))
 
 
+def sphere_pair_ratios(codes):
+    """cfSpheres / LIGGGHTS cost of each pair of runs taken in turn ([] unless paired)."""
+    cfRuns = codes.get("cfSpheres", {}).get("runRates", [])
+    lgRuns = codes.get("liggghts", {}).get("runRates", [])
+    if len(cfRuns) > 1 and len(cfRuns) == len(lgRuns):
+        return [lg/cf for cf, lg in zip(cfRuns, lgRuns)]
+    return []
+
+
 def write_doc(path, res, table, quick=False, regenerated=False):
     m = res["machine"]
     mat = res["material"]
@@ -58,10 +67,9 @@ def write_doc(path, res, table, quick=False, regenerated=False):
         best = min((c for c in ("cfPairCollision", "ofIco") if c in codes), key=lambda c: 1/codes[c]["rate"],
                    default=None)
         # Two decimals: the goal's 1.5 is not to be reached by rounding
-        cfRates, lgRates = cf.get("runRates", []), lg.get("runRates", [])
-        pairs = [lgr/cfr for cfr, lgr in zip(cfRates, lgRates)]
+        pairs = sphere_pair_ratios(codes)
         inTurns = (f"; the pairs of runs in turns gave {min(pairs):.2f}-{max(pairs):.2f}, median "
-                   f"{statistics.median(pairs):.2f}" if len(cfRates) == len(lgRates) > 1 else "")
+                   f"{statistics.median(pairs):.2f}" if pairs else "")
         add(f"**chargedFoam spheres: {1e6/cf['rate']:.3g} us per particle-step, {lg['rate']/cf['rate']:.2f} "
             f"times LIGGGHTS' {1e6/lg['rate']:.2g} us** (goal: at most 1.5 times{inTurns})."
             + (f" OpenFOAM's own sphere DEM on the same mesh: {1e6/codes[best]['rate']:.3g} us "
@@ -198,11 +206,10 @@ def write_doc(path, res, table, quick=False, regenerated=False):
             add(f"  {name}: {len(reps)} runs, taken in turns with the other code's, the median reported "
                 "(the runs gave " + ", ".join(f"{1e6/r:.3g}" for r in sorted(reps, reverse=True))
                 + " us per particle-step).")
-    cfRuns = codes.get("cfSpheres", {}).get("runRates", [])
-    lgRuns = codes.get("liggghts", {}).get("runRates", [])
-    if len(cfRuns) > 1 and len(cfRuns) == len(lgRuns):
+    pairs = sphere_pair_ratios(codes)
+    if pairs:
         add("  The ratio of each pair of runs taken in turn (cfSpheres / LIGGGHTS): "
-            + ", ".join(f"{lg/cf:.2f}" for cf, lg in zip(cfRuns, lgRuns)) + ".")
+            + ", ".join(f"{r:.2f}" for r in pairs) + ".")
     add("  Expect +-20-30 % from run to run on this shared machine, and more for chargedFoam (its")
     add("  10 MB of parcels suffer more from other work than LIGGGHTS' few MB): the medians of runs")
     add("  taken in turns are the figures to compare; the third digit is not significant.")
