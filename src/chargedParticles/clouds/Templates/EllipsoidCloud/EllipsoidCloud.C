@@ -18,31 +18,9 @@
 #include "cutoffPairs.H"
 #include "ellipsoidContact.H"
 #include "GravityForce.H"
+#include "prefetch.H"
 
 #include <algorithm>
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Ask for an object's cache lines ahead of its use. A pass over the cloud
-//  walks a linked list of parcels of about ten lines each: unasked, each
-//  parcel waits for memory (in the last kick's loop most of the time sat
-//  on the first loads of the next parcel). A compiler builtin: no library
-//  gives a prefetch, and it never faults
-template<class Type>
-inline void prefetch(const Type* object)
-{
-    const char* bytes = reinterpret_cast<const char*>(object);
-    for (std::size_t b = 0; b < sizeof(Type); b += 64)
-    {
-        __builtin_prefetch(bytes + b);
-    }
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * //
 
@@ -77,24 +55,41 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
         // fractions folded into the move pass (a pass over a large cloud
         // is a walk through memory: 4 % of the step at 10^5 parcels).
         // Cloud::move also drops its stored global positions, which only
-        // a mesh change stores and reads at once (autoMap). The next
-        // parcel is asked for as this one moves (prefetch), and the moved
-        // parcels are listed for the last kick's loop
+        // a mesh change stores and reads at once (autoMap). The moved
+        // parcels are listed for the last kick's loop, in place of the
+        // last step's list, whose entry four ahead is, unless the cloud
+        // changed since, the parcel four ahead: it is asked for
+        // (prefetch; a stale entry costs a useless fetch, never a fault),
+        // and so is the next parcel of the linked list
         td.switchProcessor = false;
-        moved_.clear();
+        const label nLast = moved_.size();
+        label nMoved = 0;
         for (parcelType& p : *this)
         {
             prefetch(static_cast<const parcelType*>(p.next_));
+            if (nMoved + 4 < nLast)
+            {
+                prefetch(moved_[nMoved + 4]);
+            }
             p.stepFraction() = 0;
             if (p.move(cloud, td, deltaT))
             {
-                moved_.append(&p);
+                if (nMoved < nLast)
+                {
+                    moved_[nMoved] = &p;
+                }
+                else
+                {
+                    moved_.append(&p);
+                }
+                ++nMoved;
             }
             else
             {
                 this->deleteParticle(p);
             }
         }
+        moved_.setSize(nMoved);
     }
     kickInMove_ = false;
     gatherer_ = nullptr;
@@ -133,9 +128,10 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     {
         kicked->beginKicks();
     }
-    if (!Pstream::parRun() && moved_.size() == this->size())
+    if (moved_.size() == this->size())
     {
-        // In cloud order, the parcel four ahead asked for
+        // In cloud order (moved_ is filled by the serial move pass only),
+        // the parcel four ahead asked for
         const label n = moved_.size();
         for (label k = 0; k < n; ++k)
         {

@@ -908,6 +908,7 @@ void Foam::EllipsoidCollision<CloudType>::realReferredInteraction()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::wallFaceContact
 (
+    const bool parcelRecords,
     const label i,
     const face& f,
     const pointField& pts,
@@ -992,7 +993,7 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
     const vector vRel = pointVelocity(b.U, b.omega, xp, xc);
     vector& xi =
         (
-            referring()
+            parcelRecords
           ? p.collisionRecords().matchWallRecord(xc - xp, r)
           : wallHistories_.match(xc - xp, r)
         ).collisionData();
@@ -1045,7 +1046,8 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
 
     // Parcels with wall faces in reach (all parcels when some have
     // referred wall faces: the faces across processors and cyclics are
-    // found per step from the interaction lists)
+    // found per step from the interaction lists; their wall histories
+    // then live in the parcels' records)
     const bool allParcels = referring();
     const label nLoop = allParcels ? bodies_.size() : wallParcels_.size();
     for (label m = 0; m < nLoop; ++m)
@@ -1063,6 +1065,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
             const label bFacei = facei - mesh.nInternalFaces();
             wallFaceContact
             (
+                allParcels,
                 i,
                 faces[facei],
                 points,
@@ -1085,6 +1088,7 @@ void Foam::EllipsoidCollision<CloudType>::wallInteraction()
                 const pointField& pts = rwf.points();
                 wallFaceContact
                 (
+                    allParcels,
                     i,
                     rwf,
                     pts,
