@@ -26,87 +26,63 @@
 
 template<class CloudType>
 template<class TrackCloudType>
-void Foam::EllipsoidCloud<CloudType>::moveCollide
+void Foam::EllipsoidCloud<CloudType>::serialMove
 (
     TrackCloudType& cloud,
     typename parcelType::trackingData& td,
     const scalar deltaT
 )
 {
-    cloud.initialiseForces();
-
-    // The first half kick, the drift and the rotation in one pass
-    // (EllipsoidParcel::move); a contact model gathers its contact
-    // bodies as the parcels finish
-    gatherer_ = this->collision().active() ? this->contactModel() : nullptr;
-    if (gatherer_)
+    // Cloud::move's serial part with its pass that zeroes the step
+    // fractions folded into the move pass (a pass over a large cloud is a
+    // walk through memory: 4 % of the step at 10^5 parcels). Cloud::move
+    // also drops its stored global positions, which only a mesh change
+    // stores and reads at once (autoMap). The moved parcels are listed for
+    // the last kick's loop, in place of the last step's list, whose entry
+    // four ahead is, unless the cloud changed since, the parcel four
+    // ahead: it is asked for (prefetch; a stale entry costs a useless
+    // fetch, never a fault), and so is the next parcel of the linked list
+    td.switchProcessor = false;
+    const label nLast = moved_.size();
+    label nMoved = 0;
+    for (parcelType& p : *this)
     {
-        gatherer_->beginGather();
-    }
-    td.part() = parcelType::trackingData::tpLinearTrack;
-    kickInMove_ = true;
-    if (Pstream::parRun())
-    {
-        CloudType::move(cloud, td, deltaT);
-    }
-    else
-    {
-        // Cloud::move's serial part with its pass that zeroes the step
-        // fractions folded into the move pass (a pass over a large cloud
-        // is a walk through memory: 4 % of the step at 10^5 parcels).
-        // Cloud::move also drops its stored global positions, which only
-        // a mesh change stores and reads at once (autoMap). The moved
-        // parcels are listed for the last kick's loop, in place of the
-        // last step's list, whose entry four ahead is, unless the cloud
-        // changed since, the parcel four ahead: it is asked for
-        // (prefetch; a stale entry costs a useless fetch, never a fault),
-        // and so is the next parcel of the linked list
-        td.switchProcessor = false;
-        const label nLast = moved_.size();
-        label nMoved = 0;
-        for (parcelType& p : *this)
+        prefetch(static_cast<const parcelType*>(p.next_));
+        if (nMoved + 4 < nLast)
         {
-            prefetch(static_cast<const parcelType*>(p.next_));
-            if (nMoved + 4 < nLast)
+            prefetch(moved_[nMoved + 4]);
+        }
+        p.stepFraction() = 0;
+        if (p.move(cloud, td, deltaT))
+        {
+            if (nMoved < nLast)
             {
-                prefetch(moved_[nMoved + 4]);
-            }
-            p.stepFraction() = 0;
-            if (p.move(cloud, td, deltaT))
-            {
-                if (nMoved < nLast)
-                {
-                    moved_[nMoved] = &p;
-                }
-                else
-                {
-                    moved_.append(&p);
-                }
-                ++nMoved;
+                moved_[nMoved] = &p;
             }
             else
             {
-                this->deleteParticle(p);
+                moved_.append(&p);
             }
+            ++nMoved;
         }
-        moved_.setSize(nMoved);
+        else
+        {
+            this->deleteParticle(p);
+        }
     }
-    kickInMove_ = false;
-    gatherer_ = nullptr;
+    moved_.setSize(nMoved);
+}
 
-    this->updateCellOccupancy();
 
-    // Lazy tracking: the positions of a write step's forces are the
-    // tracked ones that are written, whose round-off differs from the
-    // lazy centres': a restart evaluates its first forces (and charging
-    // fields) at the written positions, and continues only so exactly
-    if (trackBeforeForces_)
-    {
-        this->trackDrifts();
-    }
-
-    cloud.calculateForces();
-
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::EllipsoidCloud<CloudType>::lastKicks
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td,
+    const scalar deltaT
+)
+{
     // The last half kick does not move parcels through the mesh: a plain
     // loop over the parcels' kicks, not Cloud::move (whose tracking set-up
     // and processor transfer exchange would be for nothing) nor the
@@ -153,6 +129,55 @@ void Foam::EllipsoidCloud<CloudType>::moveCollide
     {
         kicked->endKicks();
     }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::EllipsoidCloud<CloudType>::moveCollide
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td,
+    const scalar deltaT
+)
+{
+    cloud.initialiseForces();
+
+    // The first half kick, the drift and the rotation in one pass
+    // (EllipsoidParcel::move); a contact model gathers its contact
+    // bodies as the parcels finish
+    gatherer_ = this->collision().active() ? this->contactModel() : nullptr;
+    if (gatherer_)
+    {
+        gatherer_->beginGather();
+    }
+    td.part() = parcelType::trackingData::tpLinearTrack;
+    kickInMove_ = true;
+    if (Pstream::parRun())
+    {
+        CloudType::move(cloud, td, deltaT);
+    }
+    else
+    {
+        serialMove(cloud, td, deltaT);
+    }
+    kickInMove_ = false;
+    gatherer_ = nullptr;
+
+    this->updateCellOccupancy();
+
+    // Lazy tracking: the positions of a write step's forces are the
+    // tracked ones that are written, whose round-off differs from the
+    // lazy centres': a restart evaluates its first forces (and charging
+    // fields) at the written positions, and continues only so exactly
+    if (trackBeforeForces_)
+    {
+        this->trackDrifts();
+    }
+
+    cloud.calculateForces();
+
+    lastKicks(cloud, td, deltaT);
 }
 
 
