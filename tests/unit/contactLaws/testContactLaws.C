@@ -16,6 +16,9 @@
       - selection: the dictionary entries pick the parts, a wall law
         takes the pairs' parts unless it names its own, unknown names and
         out-of-range constants are errors;
+      - sphereContactBatch, the SIMD lanes of sphere-sphere contacts with
+        the default parts, gives the scalar path's results bit for bit
+        and leaves the contacts' first and last steps to it;
       - the wall-contact histories of the flat store (wallHistories) are
         those of OpenFOAM's own per-parcel record lists
         (CollisionRecordList: matchWallRecord, update) in random sequences
@@ -25,6 +28,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "contactLaw.H"
+#include "sphereContactBatch.H"
 #include "wallHistories.H"
 #include "labelField.H"
 #include "vectorField.H"
@@ -317,6 +321,170 @@ TEST(contactLaw, selectionAndErrors)
         Foam::IOerror
     );
 }
+
+// sphereContactBatch against the scalar path it stands for: the sphere
+// contact (ellipsoidContact::sphereSphere), then what the collision
+// model's pairForce does for two spheres with the law's parts through
+// contactLaw::force (the point velocities at the midpoint of the contact
+// points, the reduced mass, the normal mobility 1/mA + 1/mB, the torques
+// about the centres). Random lanes of two materials, in full and partial
+// batches: spheres apart and in contact, new contacts and lasting ones
+// (histories with a normal part to project away), sticking and slipping,
+// first and last steps. Every lane in contact that the batch does not
+// leave to the scalar path gives the scalar results bit for bit; the lanes
+// it leaves are those whose Hertz kick takes the onset correction
+TEST(sphereContactBatch, isTheScalarPathBitForBit)
+{
+    const contactLaw law(lawDict("mindlin", 0.5, 0.3));
+    ASSERT_TRUE(law.defaultParts());
+    EXPECT_FALSE(contactLaw(lawDict("coulomb")).defaultParts());
+    const contactProperties props[2] =
+    {
+        law.properties(5e6, 0.3, 5e6, 0.3, dictionary(), 0.5, 0.3, 0),
+        law.properties(7e7, 0.25, 5e6, 0.3, dictionary(), 0.8, 0.1, 0)
+    };
+    const sphereContactBatch::lawConstants constants[2] =
+    {
+        sphereContactBatch::lawConstants::of(props[0]),
+        sphereContactBatch::lawConstants::of(props[1])
+    };
+    const scalar dt = 5e-6;
+    Random rnd(17);
+    sphereContactBatch batch;
+    label nContact = 0, nApart = 0, nScalar = 0, nSlip = 0, nDiffer = 0;
+    label nWrongScalar = 0;
+
+    struct laneInput
+    {
+        point xA, xB;
+        scalar rA, rB, mA, mB;
+        vector UA, UB, omegaA, omegaB, xi;
+        label material;
+    };
+
+    for (label b = 0; b < 20000; ++b)
+    {
+        const label nLanes = 1 + (b % sphereContactBatch::width);
+        laneInput in[sphereContactBatch::width];
+        for (label l = 0; l < nLanes; ++l)
+        {
+            laneInput& x = in[l];
+            x.rA = 5e-4*(1 + rnd.sample01<scalar>());
+            x.rB = 5e-4*(1 + rnd.sample01<scalar>());
+            x.mA = 2500*4.19*pow3(x.rA);
+            x.mB = 2500*4.19*pow3(x.rB);
+            const vector dir = rnd.GaussNormal<vector>();
+            // overlaps from -2e-4 (apart) to 8e-4 of the radii' sum
+            const scalar gap =
+                (x.rA + x.rB)*(1 - 1e-3*rnd.sample01<scalar>() + 2e-4);
+            x.xA = vector(0.01, -0.02, 0.03) + 1e-3*rnd.GaussNormal<vector>();
+            x.xB = x.xA + gap*dir/mag(dir);
+            x.UA = 0.005*rnd.GaussNormal<vector>();
+            x.UB = 0.005*rnd.GaussNormal<vector>();
+            x.omegaA = 5*rnd.GaussNormal<vector>();
+            x.omegaB = 5*rnd.GaussNormal<vector>();
+            // histories from 1e-10 to 1e-7 m: sticking and slipping
+            const scalar kind = rnd.sample01<scalar>();
+            const scalar xiScale = 1e-7*std::pow(1e-3, rnd.sample01<scalar>());
+            x.xi =
+                kind < 0.2 ? vector(Zero)
+              : kind < 0.3 ? xiScale*dir
+              : xiScale*rnd.GaussNormal<vector>();
+            x.material = rnd.sample01<scalar>() < 0.5 ? 0 : 1;
+            batch.setLane
+            (
+                l,
+                x.xA, x.rA, x.UA, x.omegaA, x.mA,
+                x.xB, x.rB, x.UB, x.omegaB, x.mB,
+                constants[x.material], x.xi
+            );
+        }
+        batch.evaluate(nLanes, dt);
+
+        for (label l = 0; l < nLanes; ++l)
+        {
+            const laneInput& x = in[l];
+            const ellipsoidContact::result c =
+                ellipsoidContact::sphereSphere(x.xA, x.rA, x.xB, x.rB);
+            if (!c.contact || c.overlap <= 0)
+            {
+                ++nApart;
+                nDiffer += batch.contact(l);
+                continue;
+            }
+            ++nContact;
+            nDiffer += !batch.contact(l);
+            nDiffer += batch.overlap(l) != c.overlap;
+
+            const point xc = 0.5*(c.x1 + c.x2);
+            const vector vRel =
+                (x.UA + (x.omegaA ^ (xc - x.xA)))
+              - (x.UB + (x.omegaB ^ (xc - x.xB)));
+            const scalar mStar = x.mA*x.mB/(x.mA + x.mB);
+            const scalar invMassNormal = 1/x.mA + 1/x.mB;
+            const scalar vn = vRel & c.n;
+
+            // The first step of a contact, or the last (the next drift
+            // ends without overlap at the speed the uncorrected kick
+            // leaves): hertzDashpot's onset correction
+            const contactProperties& p = props[x.material];
+            const scalar sqrtR = Foam::sqrt(c.reducedRadius);
+            const scalar sqrtRdelta = sqrtR*Foam::sqrt(c.overlap);
+            const scalar etaN =
+                2*Foam::sqrt(5.0/6.0)*mag(p.beta)
+               *Foam::sqrt(2*p.Estar*sqrtRdelta*mStar);
+            const scalar kHertz = (4.0/3.0)*p.Estar*sqrtR;
+            const scalar Fe = kHertz*(c.overlap*Foam::sqrt(c.overlap));
+            const scalar vnNext =
+                vn - dt*max(Fe + etaN*vn, scalar(0))*invMassNormal;
+            const bool corrected =
+                c.overlap <= vn*dt || c.overlap + vnNext*dt <= 0;
+            if (batch.needsScalar(l))
+            {
+                ++nScalar;
+                nWrongScalar += !corrected;
+                continue;
+            }
+            nWrongScalar += corrected;
+
+            vector xi = x.xi;
+            scalar dUdR;
+            contactWork work{0, 0};
+            const vector F = law.force
+            (
+                p, c, vRel, mStar, invMassNormal, dt, xi, dUdR, work
+            );
+            const vector MA = ((xc - x.xA) ^ F) + vector(Zero);
+            const vector MB = ((xc - x.xB) ^ F) + vector(Zero);
+            const scalar Fn = -(F & c.n);
+            if (mag(F + Fn*c.n) >= (1 - 1e-9)*p.mu*Fn)
+            {
+                ++nSlip;
+            }
+            if
+            (
+                batch.F(l) != F || batch.torqueA(l) != MA
+             || batch.torqueAboutB(l) != MB || batch.xi(l) != xi
+             || batch.dissipated(l) != work.dissipated
+             || batch.elastic(l) != work.elastic
+            )
+            {
+                ++nDiffer;
+            }
+        }
+    }
+    report("sphere batch: lanes in contact", nContact);
+    report("sphere batch: lanes apart", nApart);
+    report("sphere batch: lanes left to the scalar path", nScalar);
+    report("sphere batch: slipping lanes", nSlip);
+    EXPECT_GT(nApart, 1000);
+    EXPECT_GT(nScalar, 100);
+    EXPECT_GT(nSlip, 1000);
+    EXPECT_GT(nContact - nScalar - nSlip, 1000);
+    EXPECT_EQ(nWrongScalar, 0);
+    EXPECT_EQ(nDiffer, 0);
+}
+
 
 // The flat store against OpenFOAM's per-parcel record lists: each body
 // touches walls along a random subset of six directions (jittered, so

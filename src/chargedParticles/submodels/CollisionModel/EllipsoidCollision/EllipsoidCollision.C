@@ -107,6 +107,16 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
         }
     );
 
+    batchLaws_.clear();
+    if (pairContact_.defaultParts())
+    {
+        batchLaws_.setSize(pp_.size());
+        forAll(pp_, pairi)
+        {
+            batchLaws_[pairi] = sphereContactBatch::lawConstants::of(pp_[pairi]);
+        }
+    }
+
     // The collision time's per-material factors
     selfEstar_.setSize(n);
     rayleighFactorSqr_.setSize(n);
@@ -753,8 +763,153 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 
 
 template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
+inline void Foam::EllipsoidCollision<CloudType>::realRealPair
+(
+    const label i,
+    const label k
+)
 {
+    const contactBody& A = bodies_[i];
+    const point& xA = bodies_.x(i);
+    const label j = list_.partner(k);
+    const contactBody& B = bodies_[j];
+    const point& xB = bodies_.x(j);
+
+    // Bounding spheres of the collision shells, then the contact. Apart,
+    // the pair's tracked direction is forgotten: it then depends only on
+    // the pair's own history since it came within reach, not on when the
+    // list was built
+    const bool spheres = A.sphere && B.sphere;
+    if (magSqr(xA - xB) > sqr(A.radius + B.radius))
+    {
+        histories_.setTouching(k, false);
+        if (!spheres)
+        {
+            histories_.direction(k) = Zero;
+            histories_.directionChange(k) = Zero;
+            histories_.apartUntil(k) = 0;
+        }
+        return;
+    }
+
+    // Still separated along the tracked direction (the bodies travelled
+    // less than its gap since): what the narrow phase's first evaluation
+    // there would decide, with the same normalisation of the direction, so
+    // the run is bit-identical. The factor covers the round-off of the
+    // travel sums (relative eps per step since the list's build)
+    if (!spheres)
+    {
+        const scalar apartUntil = histories_.apartUntil(k);
+        if
+        (
+            apartUntil > 0
+         && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
+          < apartUntil
+        )
+        {
+            vector& n = histories_.direction(k);
+            n = n*(1/mag(n));
+            return;
+        }
+    }
+
+    // Two spheres: the analytic contact (pairGeometry's for them, which
+    // spheres do not track a direction for)
+    const ellipsoidContact::result c =
+        spheres
+      ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
+      : listPairGeometry(k, A, xA, B, xB);
+    if (!c.contact || c.overlap <= 0)
+    {
+        histories_.setTouching(k, false);
+        return;
+    }
+
+    // A new contact starts its tangential history
+    vector& xi = histories_.xi(k);
+    if (!histories_.touching(k))
+    {
+        xi = Zero;
+        histories_.setTouching(k, true);
+    }
+    nPairSides_ += 2;
+
+    const vector F = pairForce
+    (
+        c, A, xA, B, xB, xi, -1, bodies_.torque(i), bodies_.torque(j)
+    );
+    bodies_.force(i) += F;
+    bodies_.force(j) -= F;
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::sphereBatchInteraction()
+{
+    // Pairs wait in the list's order: sphere pairs in reach in the batch's
+    // lanes, the others (non-spheres, rolling resistance) to go one by
+    // one; at a full batch or queue the batch is evaluated and the queue
+    // takes effect in order. A lane that the batch leaves to the scalar
+    // path (a contact's first or last step) or whose overlap passes half
+    // the buffer layers (the warning) is done one by one there: nothing
+    // of its pair has changed since it was queued
+    const label queueSize = 4*sphereContactBatch::width;
+    struct waiting
+    {
+        label i, k, lane;
+    };
+    FixedList<waiting, queueSize> queue;
+    label nQueued = 0, nLanes = 0;
+    sphereContactBatch batch;
+
+    auto takeEffect = [&]()
+    {
+        if (nLanes > 0)
+        {
+            batch.evaluate(nLanes, deltaT_);
+        }
+        for (label q = 0; q < nQueued; ++q)
+        {
+            const label i = queue[q].i, k = queue[q].k, l = queue[q].lane;
+            if (l < 0)
+            {
+                realRealPair(i, k);
+                continue;
+            }
+            if (!batch.contact(l))
+            {
+                histories_.setTouching(k, false);
+                continue;
+            }
+            const label j = list_.partner(k);
+            const scalar twoDeltaBl =
+                bodies_[i].deltaBl + bodies_[j].deltaBl;
+            if
+            (
+                batch.needsScalar(l)
+             || (twoDeltaBl > 0 && batch.overlap(l) > 0.5*twoDeltaBl)
+            )
+            {
+                realRealPair(i, k);
+                continue;
+            }
+
+            // pairForce's effects (real pairs book all of their energy)
+            histories_.setTouching(k, true);
+            histories_.xi(k) = batch.xi(l);
+            nPairSides_ += 2;
+            dissipatedEnergy_ += batch.dissipated(l);
+            elasticEnergy_ += batch.elastic(l);
+            bodies_.torque(i) += batch.torqueA(l);
+            bodies_.torque(j) -= batch.torqueAboutB(l);
+            const vector F = batch.F(l);
+            bodies_.force(i) += F;
+            bodies_.force(j) -= F;
+        }
+        nQueued = 0;
+        nLanes = 0;
+    };
+
     for (label i = 0; i < bodies_.size(); ++i)
     {
         const contactBody& A = bodies_[i];
@@ -763,74 +918,58 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
         {
             const label j = list_.partner(k);
             const contactBody& B = bodies_[j];
-            const point& xB = bodies_.x(j);
-
-            // Bounding spheres of the collision shells, then the contact.
-            // Apart, the pair's tracked direction is forgotten: it then
-            // depends only on the pair's own history since it came within
-            // reach, not on when the list was built
-            const bool spheres = A.sphere && B.sphere;
-            if (magSqr(xA - xB) > sqr(A.radius + B.radius))
+            const label pairi = A.material*nMaterials_ + B.material;
+            if (!(A.sphere && B.sphere) || pp_[pairi].muR > 0)
             {
-                histories_.setTouching(k, false);
-                if (!spheres)
-                {
-                    histories_.direction(k) = Zero;
-                    histories_.directionChange(k) = Zero;
-                    histories_.apartUntil(k) = 0;
-                }
-                continue;
+                queue[nQueued++] = {i, k, -1};
             }
-
-            // Still separated along the tracked direction (the bodies
-            // travelled less than its gap since): what the narrow phase's
-            // first evaluation there would decide, with the same
-            // normalisation of the direction, so the run is bit-identical.
-            // The factor covers the round-off of the travel sums (relative
-            // eps per step since the list's build)
-            if (!spheres)
+            else
             {
-                const scalar apartUntil = histories_.apartUntil(k);
-                if
-                (
-                    apartUntil > 0
-                 && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
-                  < apartUntil
-                )
+                const point& xB = bodies_.x(j);
+                if (magSqr(xA - xB) > sqr(A.radius + B.radius))
                 {
-                    vector& n = histories_.direction(k);
-                    n = n*(1/mag(n));
+                    histories_.setTouching(k, false);
                     continue;
                 }
+                batch.setLane
+                (
+                    nLanes,
+                    xA, A.radius, A.U, A.omega, A.mass,
+                    xB, B.radius, B.U, B.omega, B.mass,
+                    batchLaws_[pairi],
+                    histories_.touching(k) ? histories_.xi(k) : vector(Zero)
+                );
+                queue[nQueued++] = {i, k, nLanes++};
             }
-
-            // Two spheres: the analytic contact (pairGeometry's for them,
-            // which spheres do not track a direction for)
-            const ellipsoidContact::result c =
-                spheres
-              ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
-              : listPairGeometry(k, A, xA, B, xB);
-            if (!c.contact || c.overlap <= 0)
+            if (nLanes == sphereContactBatch::width || nQueued == queueSize)
             {
-                histories_.setTouching(k, false);
-                continue;
+                takeEffect();
             }
+        }
+    }
+    takeEffect();
+}
 
-            // A new contact starts its tangential history
-            vector& xi = histories_.xi(k);
-            if (!histories_.touching(k))
-            {
-                xi = Zero;
-                histories_.setTouching(k, true);
-            }
-            nPairSides_ += 2;
 
-            const vector F = pairForce
-            (
-                c, A, xA, B, xB, xi, -1, bodies_.torque(i), bodies_.torque(j)
-            );
-            bodies_.force(i) += F;
-            bodies_.force(j) -= F;
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
+{
+    // The batch takes what pairForce does with the default law's parts
+    // (not the listing of the contacts), for beds with spheres
+    if
+    (
+        batchLaws_.size() && !recordContacts_
+     && bodies_.nShells() < bodies_.size()
+    )
+    {
+        sphereBatchInteraction();
+        return;
+    }
+    for (label i = 0; i < bodies_.size(); ++i)
+    {
+        for (label k = list_.begin(i); k < list_.end(i); ++k)
+        {
+            realRealPair(i, k);
         }
     }
 }
