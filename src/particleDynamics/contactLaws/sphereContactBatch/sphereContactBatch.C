@@ -77,7 +77,11 @@ inline lanes3 load3(const scalar v[3][Foam::sphereContactBatch::width])
     return {load(v[0]), load(v[1]), load(v[2])};
 }
 
-inline void store3(scalar v[3][Foam::sphereContactBatch::width], const lanes3& a)
+inline void store3
+(
+    scalar v[3][Foam::sphereContactBatch::width],
+    const lanes3& a
+)
 {
     store(v[0], a.x);
     store(v[1], a.y);

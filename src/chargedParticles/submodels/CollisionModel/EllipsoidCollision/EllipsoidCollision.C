@@ -113,7 +113,8 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
         batchLaws_.setSize(pp_.size());
         forAll(pp_, pairi)
         {
-            batchLaws_[pairi] = sphereContactBatch::lawConstants::of(pp_[pairi]);
+            batchLaws_[pairi] =
+                sphereContactBatch::lawConstants::of(pp_[pairi]);
         }
     }
 
