@@ -699,7 +699,9 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
         );
     }
 
-    // Contact point: the midpoint (exact angular momentum balance)
+    // Contact point: the midpoint (exact angular momentum balance).
+    // sphereContactBatch.C repeats what follows for two real spheres (a
+    // change here goes there too; its unit test compares them bit for bit)
     const point xc = 0.5*(c.x1 + c.x2);
     const vector vRel =
         pointVelocity(A.U, A.omega, xA, xc)
