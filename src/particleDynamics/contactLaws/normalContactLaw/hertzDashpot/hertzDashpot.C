@@ -6,6 +6,8 @@
 #include "hertzOnset.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <map>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -67,6 +69,16 @@ Foam::scalar Foam::normalContactLaws::hertzDashpot::calibratedDampingRatio
         return 0;
     }
 
+    // Each calibration integrates about 60 impacts (0.05 s): a run asks
+    // for the same e for its pairs and its walls, and for its material
+    // pairs, so the results are kept (std::map: a handful of entries)
+    static std::map<scalar, scalar> calibrated;
+    const auto known = calibrated.find(e);
+    if (known != calibrated.end())
+    {
+        return known->second;
+    }
+
     // restitution(beta) falls monotonically with |beta|: bracket, bisect
     scalar lo = 0, hi = 1;
     while (restitution(-hi) > e && hi < 1e3)
@@ -85,7 +97,9 @@ Foam::scalar Foam::normalContactLaws::hertzDashpot::calibratedDampingRatio
             hi = mid;
         }
     }
-    return -0.5*(lo + hi);
+    const scalar beta = -0.5*(lo + hi);
+    calibrated[e] = beta;
+    return beta;
 }
 
 
