@@ -145,7 +145,7 @@ Foam::sphereContactBatch::lawConstants
 Foam::sphereContactBatch::lawConstants::of(const contactProperties& p)
 {
     // The products as hertzDashpot::force and mindlinSpring::addForce
-    // form them (left to right)
+    // form them (left to right): Ruan Eq. (36), Rasera Eqs. (9), (11)
     lawConstants c;
     c.twoEstar = 2*p.Estar;
     c.fourThirdsEstar = (4.0/3.0)*p.Estar;
@@ -227,7 +227,8 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
     const lanes sqrtR = sqrtOf(R);
     const lanes sqrtRdelta = sqrtR*sqrtOf(delta);
 
-    // hertzDashpot::force without the onset correction (needsScalar)
+    // hertzDashpot::force without the onset correction (needsScalar):
+    // Hertz, Ruan Eq. (36), and dashpot, Rasera Eqs. (9)-(10), no tension
     const lanes dt4 = broadcast(dt);
     const lanes dampingFactor = load(dampingFactor_);
     const lanes Sn = load(twoEstar_)*sqrtRdelta;
@@ -244,8 +245,8 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
     lanes elastic = zero + broadcast(0.4)*kHertz*delta*delta32;
     lanes3 F = (-Fn)*n;
 
-    // mindlinSpring::addForce: xi kept in the tangent plane with its
-    // length, stretched, limited by friction
+    // mindlinSpring::addForce (Rasera Eqs. 7, 8, 11, 12): xi kept in the
+    // tangent plane with its length, stretched, limited by friction
     lanes3 xi = load3(xi_);
     const lanes xiMag2 = dot(xi, xi);
     const laneMask hasXi = xiMag2 > zero;
@@ -288,7 +289,9 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
         dissipated + ((-dot(Ft, vt))*dt4 - (springAfter - springBefore));
     elastic = elastic + springAfter;
 
-    // Torques about the centres (Ruan Eq. 40), no rolling resistance
+    // Torques about the centres (Ruan Eq. 40), no rolling resistance; the
+    // zero added is pairForce's rolling torque Mr = 0 (it turns a -0 into
+    // +0, as there)
     const lanes3 none{zero, zero, zero};
     store3(F_, F);
     store3(MA_, cross(xc - xA, F) + none);

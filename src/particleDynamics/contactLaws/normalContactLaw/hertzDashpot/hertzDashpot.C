@@ -69,9 +69,10 @@ Foam::scalar Foam::normalContactLaws::hertzDashpot::calibratedDampingRatio
         return 0;
     }
 
-    // Each calibration integrates about 60 impacts (0.05 s): a run asks
-    // for the same e for its pairs and its walls, and for its material
-    // pairs, so the results are kept (std::map: a handful of entries)
+    // Each calibration integrates about 60 impacts (about 80 million
+    // instructions): a run asks for the same e for its pairs and its
+    // walls, and for its material pairs, so the results are kept
+    // (std::map: a handful of entries)
     static std::map<scalar, scalar> calibrated;
     const auto known = calibrated.find(e);
     if (known != calibrated.end())
