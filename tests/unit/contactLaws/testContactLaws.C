@@ -29,6 +29,8 @@
 
 #include "contactLaw.H"
 #include "sphereContactBatch.H"
+#include "ellipsoidContactBatch.H"
+#include "rigidBodyRotation.H"
 #include "wallHistories.H"
 #include "labelField.H"
 #include "vectorField.H"
@@ -481,6 +483,217 @@ TEST(sphereContactBatch, isTheScalarPathBitForBit)
     EXPECT_GT(nScalar, 100);
     EXPECT_GT(nSlip, 1000);
     EXPECT_GT(nContact - nScalar - nSlip, 1000);
+    EXPECT_EQ(nWrongScalar, 0);
+    EXPECT_EQ(nDiffer, 0);
+}
+
+
+// Lasting contacts of random ellipsoids (aspect ratios 1 to 3, two
+// materials) started near their normal, four at a time: each decided
+// lane's narrow phase is ellipsoidContact::contact's from the same start,
+// and its kick what EllipsoidCollision::pairForce forms from that contact
+// (contact point, relative velocity, the normal mobilities of the inverse
+// inertia tensors, the law, the torques and -dU/dR gradR) bit for bit
+TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
+{
+    const contactLaw law(lawDict("mindlin", 0.5, 0.3));
+    const contactProperties props[2] =
+    {
+        law.properties(5e6, 0.3, 5e6, 0.3, dictionary(), 0.5, 0.3, 0),
+        law.properties(7e7, 0.25, 5e6, 0.3, dictionary(), 0.8, 0.1, 0)
+    };
+    const defaultLawConstants constants[2] =
+    {
+        defaultLawConstants::of(props[0]),
+        defaultLawConstants::of(props[1])
+    };
+    const scalar dt = 5e-6;
+    const scalar rho = 2500;
+    Random rnd(29);
+    ellipsoidContactBatch batch;
+    label nLanes = 0, nDecided = 0, nScalar = 0, nSlip = 0;
+    label nWrongScalar = 0, nDiffer = 0, nNonZeroGradR = 0;
+
+    struct laneInput
+    {
+        ellipsoid e1, e2;
+        vector start, UA, UB, omegaA, omegaB, xi;
+        scalar mA, mB;
+        symmTensor invIA, invIB;
+        label material;
+    };
+
+    auto randomBody = [&](const point& centre, scalar& m, symmTensor& invI)
+    {
+        const vector axes
+        (
+            5e-4*(1 + 2*rnd.sample01<scalar>()),
+            5e-4*(1 + 0.5*rnd.sample01<scalar>()),
+            5e-4
+        );
+        const quaternion q(rnd.GaussNormal<scalar>(), rnd.GaussNormal<vector>());
+        const ellipsoid e(axes, centre, q);
+        m = rho*4.19*axes.x()*axes.y()*axes.z();
+        const vector I = rigidBodyRotation::principalMoments(m, axes);
+        const tensor& R = e.R();
+        invI = symm(R & tensor(1/I.x(), 0, 0, 0, 1/I.y(), 0, 0, 0, 1/I.z()) & R.T());
+        return e;
+    };
+
+    for (label b = 0; b < 5000; ++b)
+    {
+        const label n = 1 + (b % ellipsoidContactBatch::width);
+        std::vector<laneInput> in;
+        for (label l = 0; l < n; ++l)
+        {
+            scalar mA, mB;
+            symmTensor invIA, invIB;
+            const ellipsoid e1 = randomBody(vector(0.01, -0.02, 0.03), mA, invIA);
+            const vector u = rnd.GaussNormal<vector>();
+            const vector du = u/mag(u);
+            // Touching at the centre distance sOut along u (bisection),
+            // then pushed in by 1e-9 to 1e-5 m (a tenth apart by 1e-6 m)
+            const ellipsoid probe = randomBody(point::zero, mB, invIB);
+            scalar sIn = 0;
+            scalar sOut =
+                e1.boundingRadius() + probe.boundingRadius() + 1e-6;
+            for (label it = 0; it < 60; ++it)
+            {
+                const scalar sMid = 0.5*(sIn + sOut);
+                const ellipsoid e2 =
+                    probe.moved(e1.centre() + sMid*du, probe.R());
+                (ellipsoidContact::contact(e1, e2).contact ? sIn : sOut) = sMid;
+            }
+            const scalar depth =
+                rnd.sample01<scalar>() < 0.1
+              ? -1e-6
+              : 1e-9*std::pow(1e4, rnd.sample01<scalar>());
+            const ellipsoid e2 =
+                probe.moved(e1.centre() + (sOut - depth)*du, probe.R());
+
+            // The start: the contact's normal turned by 1e-8 to 1e-5 rad
+            vector nTrack(Zero);
+            const ellipsoidContact::result c0 =
+                ellipsoidContact::contact(e1, e2, nTrack);
+            const vector n0 = c0.contact ? c0.n : du;
+            const vector start =
+                n0 + 1e-8*std::pow(1e3, rnd.sample01<scalar>())
+                   *rnd.GaussNormal<vector>();
+
+            laneInput x
+            {
+                e1, e2, start,
+                0.005*rnd.GaussNormal<vector>(), 0.005*rnd.GaussNormal<vector>(),
+                5*rnd.GaussNormal<vector>(), 5*rnd.GaussNormal<vector>(),
+                vector(Zero), mA, mB, invIA, invIB,
+                rnd.sample01<scalar>() < 0.5 ? 0 : 1
+            };
+            const scalar kind = rnd.sample01<scalar>();
+            const scalar xiScale = 1e-7*std::pow(1e-3, rnd.sample01<scalar>());
+            x.xi =
+                kind < 0.2 ? vector(Zero)
+              : kind < 0.3 ? xiScale*du
+              : xiScale*rnd.GaussNormal<vector>();
+            in.push_back(x);
+            batch.setLane(l, x.e1, x.e2, x.start);
+            batch.setBodies
+            (
+                l,
+                x.e1.centre(), x.UA, x.omegaA, x.mA, x.invIA,
+                x.e2.centre(), x.UB, x.omegaB, x.mB, x.invIB,
+                constants[x.material], x.xi
+            );
+        }
+        batch.evaluate(n);
+        batch.kick(n, dt);
+
+        for (label l = 0; l < n; ++l)
+        {
+            const laneInput& x = in[l];
+            ++nLanes;
+            vector nTrack = x.start;
+            const ellipsoidContact::result c =
+                ellipsoidContact::contact(x.e1, x.e2, nTrack);
+            if (!batch.decided(l))
+            {
+                continue;
+            }
+            ++nDecided;
+            const ellipsoidContact::result g = batch.contact(l);
+            nDiffer +=
+                g.n != c.n || g.x1 != c.x1 || g.x2 != c.x2
+             || g.overlap != c.overlap || g.reducedRadius != c.reducedRadius
+             || g.gradR.rotation1 != c.gradR.rotation1
+             || g.gradR.centre1 != c.gradR.centre1 || nTrack != c.n
+             || batch.normal(l) != c.n || batch.overlap(l) != c.overlap;
+            nNonZeroGradR += mag(c.gradR.rotation1) > 0;
+
+            // EllipsoidCollision::pairForce of two real ellipsoids
+            const point& xA = x.e1.centre();
+            const point& xB = x.e2.centre();
+            const point xc = 0.5*(c.x1 + c.x2);
+            const vector vRel =
+                (x.UA + (x.omegaA ^ (xc - xA)))
+              - (x.UB + (x.omegaB ^ (xc - xB)));
+            const scalar mStar = x.mA*x.mB/(x.mA + x.mB);
+            const vector rnA = (xc - xA) ^ c.n;
+            const vector rnB = (xc - xB) ^ c.n;
+            const scalar invMassNormal =
+                (1/x.mA + (rnA & (x.invIA & rnA)))
+              + (1/x.mB + (rnB & (x.invIB & rnB)));
+
+            // The last step of a contact: hertzDashpot's onset correction
+            const contactProperties& p = props[x.material];
+            const scalar vn = vRel & c.n;
+            const scalar sqrtR = Foam::sqrt(c.reducedRadius);
+            const scalar sqrtRdelta = sqrtR*Foam::sqrt(c.overlap);
+            const scalar etaN =
+                2*Foam::sqrt(5.0/6.0)*mag(p.beta)
+               *Foam::sqrt(2*p.Estar*sqrtRdelta*mStar);
+            const scalar kHertz = (4.0/3.0)*p.Estar*sqrtR;
+            const scalar Fe = kHertz*(c.overlap*Foam::sqrt(c.overlap));
+            const scalar vnNext =
+                vn - dt*max(Fe + etaN*vn, scalar(0))*invMassNormal;
+            const bool corrected =
+                c.overlap <= vn*dt || c.overlap + vnNext*dt <= 0;
+            if (batch.needsScalar(l))
+            {
+                ++nScalar;
+                nWrongScalar += !corrected;
+                continue;
+            }
+            nWrongScalar += corrected;
+
+            vector xi = x.xi;
+            scalar dUdR;
+            contactWork work{0, 0};
+            const vector F = law.force
+            (
+                p, c, vRel, mStar, invMassNormal, dt, xi, dUdR, work
+            );
+            const vector MA = ((xc - xA) ^ F) + vector(Zero);
+            const vector MB = ((xc - xB) ^ F) + vector(Zero);
+            const scalar Fn = -(F & c.n);
+            nSlip += mag(F + Fn*c.n) >= (1 - 1e-9)*p.mu*Fn;
+            nDiffer +=
+                batch.F(l) != F - dUdR*c.gradR.centre1
+             || batch.torqueA(l) != MA - dUdR*c.gradR.rotation1
+             || batch.minusTorqueB(l) != MB + dUdR*c.gradR.rotation2
+             || batch.xi(l) != xi
+             || batch.dissipated(l) != work.dissipated
+             || batch.elastic(l) != work.elastic;
+        }
+    }
+    report("ellipsoid batch: lanes", nLanes);
+    report("ellipsoid batch: decided lanes", nDecided);
+    report("ellipsoid batch: kicks left to the scalar path", nScalar);
+    report("ellipsoid batch: slipping lanes", nSlip);
+    EXPECT_GT(nDecided, nLanes/2);
+    EXPECT_GT(nLanes - nDecided, 1000);
+    EXPECT_GT(nScalar, 100);
+    EXPECT_GT(nSlip, 1000);
+    EXPECT_GT(nDecided - nScalar - nSlip, 1000);
+    EXPECT_GT(nNonZeroGradR, nDecided/2);
     EXPECT_EQ(nWrongScalar, 0);
     EXPECT_EQ(nDiffer, 0);
 }

@@ -29,6 +29,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ellipsoidContact.H"
+#include "ellipsoidContactBatch.H"
 #include "hertzOnset.H"
 #include "error.H"
 #include "mathematicalConstants.H"
@@ -45,6 +46,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <random>
@@ -870,6 +872,153 @@ TEST(ellipsoidContact, TrackedStartAgreesWithTheFullSearch)
     EXPECT_EQ(nBad, 0);
     EXPECT_GT(nContact, 1000);
     EXPECT_GT(nSeparated, 1000);
+}
+
+
+// Bit for bit: the same double, sign of zero included
+bool sameBits(const double a, const double b)
+{
+    return std::memcmp(&a, &b, sizeof(double)) == 0;
+}
+
+bool sameBits(const vector& a, const vector& b)
+{
+    return sameBits(a.x(), b.x()) && sameBits(a.y(), b.y()) && sameBits(a.z(), b.z());
+}
+
+bool sameResult(const ellipsoidContact::result& a, const ellipsoidContact::result& b)
+{
+    return
+        a.contact == b.contact && a.used == b.used && a.iterations == b.iterations
+     && a.converged == b.converged && sameBits(a.x1, b.x1) && sameBits(a.x2, b.x2)
+     && sameBits(a.n, b.n) && sameBits(a.overlap, b.overlap)
+     && sameBits(a.reducedRadius, b.reducedRadius) && sameBits(a.separation, b.separation)
+     && sameBits(a.gradR.centre1, b.gradR.centre1)
+     && sameBits(a.gradR.rotation1, b.gradR.rotation1)
+     && sameBits(a.gradR.centre2, b.gradR.centre2)
+     && sameBits(a.gradR.rotation2, b.gradR.rotation2);
+}
+
+
+TEST(ellipsoidContactBatch, isTheScalarPathBitForBit)
+{
+    // Pairs moved through contact in small steps (approach, rotation of
+    // both, separation), four at a time in the batch's lanes, each started
+    // as EllipsoidCollision starts a lasting contact: from its last normal
+    // extrapolated by the normal's change over the step before. Every
+    // decided lane gives ellipsoidContact::contact(e1, e2, nTrack) from the
+    // same start bit for bit; the undecided ones are left to it
+    rng_t g(2024);
+    const int width = ellipsoidContactBatch::width;
+    label nLasting = 0, nDecided = 0, nDiffer = 0, nWrongDecided = 0;
+    label nIterations[6] = {0, 0, 0, 0, 0, 0};
+    ellipsoidContactBatch batch;
+
+    for (int group = 0; group < 300; ++group)
+    {
+        // Lane l's pair; the group has 1..4 lanes (partial batches)
+        const int nLanes = 1 + group % width;
+        struct pairMotion
+        {
+            vector ax1, ax2, u, w1, w2, v;
+            tensor R1, R2;
+            point touching;
+            double cMin;
+            vector n = Zero, dn = Zero;
+            bool inContact = false;
+        };
+        std::vector<pairMotion> P(nLanes);
+        for (pairMotion& p : P)
+        {
+            p.ax1 = randomAxes(g, uniform(g, 0.5, 2), 5, false);
+            p.ax2 = randomAxes(g, uniform(g, 0.5, 2), 5, true);
+            p.R1 = randomRotation(g);
+            p.u = randomUnit(g);
+            // Turns per step from a settling bed's (1e-5 rad) to 0.02 rad
+            p.w1 = logUniform(g, 1e-5, 0.02)*randomUnit(g);
+            p.w2 = logUniform(g, 1e-5, 0.02)*randomUnit(g);
+            p.v = uniform(g, 0, 2e-5)*randomUnit(g);
+            p.cMin = std::min(cmptMin(p.ax1), cmptMin(p.ax2));
+            const body b0(p.ax1, point::zero, p.R1);
+            const knownContact k =
+                makeContact(b0, p.ax2, randomRotation(g), p.u, 0, false);
+            p.touching = k.b2.c;
+            p.R2 = k.b2.R;
+        }
+
+        for (int step = -20; step <= 20; ++step)
+        {
+            std::vector<ellipsoid> e1, e2;
+            std::vector<vector> start(nLanes);
+            label nSet = 0;
+            std::vector<int> lane(nLanes, -1);
+            for (int l = 0; l < nLanes; ++l)
+            {
+                pairMotion& p = P[l];
+                // Depth 2e-3 cMin at the middle, apart at the ends
+                const double depth = p.cMin*(2e-3 - 2e-4*std::abs(step));
+                const vector r1 = step*p.w1, r2 = step*p.w2;
+                const tensor Q1 =
+                    step == 0 ? tensor::I : quaternion(r1/mag(r1), mag(r1)).R();
+                const tensor Q2 =
+                    step == 0 ? tensor::I : quaternion(r2/mag(r2), mag(r2)).R();
+                e1.push_back(ellipsoid(p.ax1, step*p.v, Q1 & p.R1));
+                e2.push_back
+                (
+                    ellipsoid(p.ax2, p.touching - depth*p.u, Q2 & p.R2)
+                );
+                start[l] = p.n + p.dn;
+                // A lasting contact with a tracked direction goes in a lane
+                if (p.inContact && magSqr(p.n) > 0 && magSqr(start[l]) > 0)
+                {
+                    batch.setLane(nSet, e1[l], e2[l], start[l]);
+                    lane[l] = nSet++;
+                }
+            }
+            if (nSet > 0)
+            {
+                batch.evaluate(nSet);
+            }
+            for (int l = 0; l < nLanes; ++l)
+            {
+                pairMotion& p = P[l];
+                vector nTrack = start[l];
+                const ellipsoidContact::result c =
+                    ellipsoidContact::contact(e1[l], e2[l], nTrack);
+                if (lane[l] >= 0)
+                {
+                    ++nLasting;
+                    ++nIterations[std::min<label>(c.iterations, 5)];
+                    if (batch.decided(lane[l]))
+                    {
+                        ++nDecided;
+                        const ellipsoidContact::result b = batch.contact(lane[l]);
+                        nDiffer += !sameResult(b, c) || !sameBits(b.n, nTrack);
+                        // A decided lane is a converged contact
+                        nWrongDecided += !(c.contact && c.converged);
+                    }
+                }
+                // EllipsoidCollision::listPairGeometry's tracking
+                const bool lasting =
+                    p.inContact && c.contact && c.overlap > 0 && c.converged
+                 && magSqr(p.n) > 0 && magSqr(nTrack) > 0;
+                p.dn = lasting ? nTrack - p.n : vector(Zero);
+                p.n = nTrack;
+                p.inContact = c.contact && c.overlap > 0;
+            }
+        }
+    }
+    std::cout
+        << "  Batch: " << nLasting << " lasting contacts, " << nDecided
+        << " decided in the lanes, " << nDiffer << " differ from the scalar path"
+        << std::endl;
+    std::cout << "  Newton iterations of the scalar path 0..5+:";
+    for (const label n : nIterations) std::cout << " " << n;
+    std::cout << std::endl;
+    EXPECT_EQ(nDiffer, 0);
+    EXPECT_EQ(nWrongDecided, 0);
+    EXPECT_GT(nLasting, 5000);
+    EXPECT_GT(nDecided, nLasting/2);
 }
 
 

@@ -589,7 +589,10 @@ Foam::EllipsoidCollision<CloudType>::pairGeometry
         referred
      && (
             A.p->origProc() > B.p->origProc()
-         || (A.p->origProc() == B.p->origProc() && A.p->origId() > B.p->origId())
+         || (
+                A.p->origProc() == B.p->origProc()
+             && A.p->origId() > B.p->origId()
+            )
         );
     const contactBody& b1 = swapped ? B : A;
     const contactBody& b2 = swapped ? A : B;
@@ -642,27 +645,56 @@ Foam::EllipsoidCollision<CloudType>::listPairGeometry
     const point& xB
 )
 {
-    vector& n = histories_.direction(k);
-
     // A lasting contact's normal turns smoothly: started from its linear
     // extrapolation, Newton is within the square of the step's turn of the
     // normal, and converges in one step instead of two (the start changes
     // the converged normal only at round-off, ellipsoidContact.H)
-    vector& dn = histories_.directionChange(k);
+    vector& n = histories_.direction(k);
     const vector before = n;
-    n += dn;
+    n += histories_.directionChange(k);
     const ellipsoidContact::result c = pairGeometry(A, xA, B, xB, false, n);
+    keepTrack(k, before, c, A, B);
+    return c;
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::keepTrack
+(
+    const label k,
+    const vector& before,
+    const ellipsoidContact::result& c,
+    const contactBody& A,
+    const contactBody& B
+)
+{
+    const vector& n = histories_.direction(k);
     const bool lasting =
         histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
      && magSqr(before) > 0 && magSqr(n) > 0;
-    dn = lasting ? n - before : vector(Zero);
+    histories_.directionChange(k) = lasting ? n - before : vector(Zero);
 
     // Separated along n: so while the bodies travel less than the gap
     histories_.apartUntil(k) =
         c.separation > 0
       ? bodies_.travel(A) + bodies_.travel(B) + c.separation
       : 0;
-    return c;
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::keepLastingTrack
+(
+    const label k,
+    const vector& n
+)
+{
+    // keepTrack of a lasting contact (touching, converged, a non-zero
+    // direction before and after): no separation
+    vector& direction = histories_.direction(k);
+    histories_.directionChange(k) = n - direction;
+    direction = n;
+    histories_.apartUntil(k) = 0;
 }
 
 
@@ -700,8 +732,10 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
     }
 
     // Contact point: the midpoint (exact angular momentum balance).
-    // sphereContactBatch.C repeats what follows for two real spheres (a
-    // change here goes there too; its unit test compares them bit for bit)
+    // sphereContactBatch.C and ellipsoidContactBatch.C repeat what follows
+    // for two real spheres and for a lasting contact of two real
+    // ellipsoids (a change here goes there too; their unit tests compare
+    // them bit for bit)
     const point xc = 0.5*(c.x1 + c.x2);
     const vector vRel =
         pointVelocity(A.U, A.omega, xA, xc)
@@ -766,22 +800,18 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 
 
 template<class CloudType>
-inline void Foam::EllipsoidCollision<CloudType>::realRealPair
+inline bool Foam::EllipsoidCollision<CloudType>::pairApart
 (
-    const label i,
-    const label k
+    const label k,
+    const contactBody& A,
+    const point& xA,
+    const contactBody& B,
+    const point& xB
 )
 {
-    const contactBody& A = bodies_[i];
-    const point& xA = bodies_.x(i);
-    const label j = list_.partner(k);
-    const contactBody& B = bodies_[j];
-    const point& xB = bodies_.x(j);
-
-    // Bounding spheres of the collision shells, then the contact. Apart,
-    // the pair's tracked direction is forgotten: it then depends only on
-    // the pair's own history since it came within reach, not on when the
-    // list was built
+    // Bounding spheres of the collision shells. Apart, the pair's tracked
+    // direction is forgotten: it then depends only on the pair's own
+    // history since it came within reach, not on when the list was built
     const bool spheres = A.sphere && B.sphere;
     if (magSqr(xA - xB) > sqr(A.radius + B.radius))
     {
@@ -792,7 +822,7 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
             histories_.directionChange(k) = Zero;
             histories_.apartUntil(k) = 0;
         }
-        return;
+        return true;
     }
 
     // Still separated along the tracked direction (the bodies travelled
@@ -812,16 +842,51 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
         {
             vector& n = histories_.direction(k);
             n = n*(1/mag(n));
-            return;
+            return true;
         }
+    }
+    return false;
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::realRealPair
+(
+    const label i,
+    const label k
+)
+{
+    const contactBody& A = bodies_[i];
+    const point& xA = bodies_.x(i);
+    const label j = list_.partner(k);
+    const contactBody& B = bodies_[j];
+    const point& xB = bodies_.x(j);
+
+    if (pairApart(k, A, xA, B, xB))
+    {
+        return;
     }
 
     // Two spheres: the analytic contact (pairGeometry's for them, which
     // spheres do not track a direction for)
-    const ellipsoidContact::result c =
-        spheres
+    realRealContact
+    (
+        i, k,
+        A.sphere && B.sphere
       ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
-      : listPairGeometry(k, A, xA, B, xB);
+      : listPairGeometry(k, A, xA, B, xB)
+    );
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::realRealContact
+(
+    const label i,
+    const label k,
+    const ellipsoidContact::result& c
+)
+{
     if (!c.contact || c.overlap <= 0)
     {
         histories_.setTouching(k, false);
@@ -837,9 +902,11 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
     }
     nPairSides_ += 2;
 
+    const label j = list_.partner(k);
     const vector F = pairForce
     (
-        c, A, xA, B, xB, xi, -1, bodies_.torque(i), bodies_.torque(j)
+        c, bodies_[i], bodies_.x(i), bodies_[j], bodies_.x(j), xi, -1,
+        bodies_.torque(i), bodies_.torque(j)
     );
     bodies_.force(i) += F;
     bodies_.force(j) -= F;
@@ -847,70 +914,139 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
 
 
 template<class CloudType>
-void Foam::EllipsoidCollision<CloudType>::sphereBatchInteraction()
+void Foam::EllipsoidCollision<CloudType>::batchInteraction
+(
+    const bool sphereLanes,
+    const bool ellipsoidLanes
+)
 {
-    // Pairs wait in the list's order: sphere pairs in reach in the batch's
-    // lanes, the others (non-spheres, rolling resistance) to go one by
-    // one; at a full batch or queue the batch is evaluated and the queue
-    // takes effect in order. A lane that the batch leaves to the scalar
-    // path (a contact's first or last step) or whose overlap passes half
-    // the buffer layers (the warning) is done one by one there: nothing
-    // of its pair has changed since it was queued
+    // Pairs wait in the list's order: sphere pairs in reach in the sphere
+    // batch's lanes, lasting contacts of ellipsoids in the ellipsoid
+    // batch's (its narrow phase, and the kick where the sphere lanes take
+    // it too), the others (new contacts of ellipsoids, rolling resistance)
+    // to go one by one; at a full batch or queue the batches are evaluated
+    // and the queue takes effect in order. A pair out of reach or certified
+    // apart changes only its own history: at once. A lane that a batch
+    // leaves to the scalar path (a sphere contact's first or last step, a
+    // narrow phase off the lasting contact's pattern) or whose overlap
+    // passes half the buffer layers (the warning) is done one by one
+    // there: nothing of its pair has changed since it was queued
     const label queueSize = 4*sphereContactBatch::width;
+    enum class path { scalar, sphere, ellipsoid };
     struct waiting
     {
         label i, k, lane;
+        path by;
     };
     FixedList<waiting, queueSize> queue;
-    label nQueued = 0, nLanes = 0;
-    sphereContactBatch batch;
+    label nQueued = 0, nSphereLanes = 0, nEllipsoidLanes = 0;
+    sphereContactBatch spheres;
+    ellipsoidContactBatch ellipsoids;
+
+    // The ellipsoid lanes also take the kick where the sphere lanes may
+    // (the default law's parts, no listing of the contacts)
+    const bool ellipsoidKicks = batchLaws_.size() && !recordContacts_;
+
+    auto sphereEffect = [&](const label i, const label k, const label l)
+    {
+        if (!spheres.contact(l))
+        {
+            histories_.setTouching(k, false);
+            return;
+        }
+        const label j = list_.partner(k);
+        const scalar twoDeltaBl = bodies_[i].deltaBl + bodies_[j].deltaBl;
+        if
+        (
+            spheres.needsScalar(l)
+         || (twoDeltaBl > 0 && spheres.overlap(l) > 0.5*twoDeltaBl)
+        )
+        {
+            realRealPair(i, k);
+            return;
+        }
+
+        // pairForce's effects (real pairs book all of their energy)
+        histories_.setTouching(k, true);
+        histories_.xi(k) = spheres.xi(l);
+        nPairSides_ += 2;
+        dissipatedEnergy_ += spheres.dissipated(l);
+        elasticEnergy_ += spheres.elastic(l);
+        bodies_.torque(i) += spheres.torqueA(l);
+        bodies_.torque(j) -= spheres.torqueAboutB(l);
+        const vector F = spheres.F(l);
+        bodies_.force(i) += F;
+        bodies_.force(j) -= F;
+    };
+
+    auto ellipsoidEffect = [&](const label i, const label k, const label l)
+    {
+        if (!ellipsoids.decided(l))
+        {
+            realRealPair(i, k);
+            return;
+        }
+        if (!ellipsoidKicks)
+        {
+            // listPairGeometry's effects, then the contact
+            const ellipsoidContact::result c = ellipsoids.contact(l);
+            keepLastingTrack(k, c.n);
+            realRealContact(i, k, c);
+            return;
+        }
+        const label j = list_.partner(k);
+        const scalar twoDeltaBl = bodies_[i].deltaBl + bodies_[j].deltaBl;
+        if
+        (
+            ellipsoids.needsScalar(l)
+         || (twoDeltaBl > 0 && ellipsoids.overlap(l) > 0.5*twoDeltaBl)
+        )
+        {
+            realRealPair(i, k);
+            return;
+        }
+
+        // listPairGeometry's and pairForce's effects (real pairs book all
+        // of their energy)
+        keepLastingTrack(k, ellipsoids.normal(l));
+        histories_.xi(k) = ellipsoids.xi(l);
+        nPairSides_ += 2;
+        dissipatedEnergy_ += ellipsoids.dissipated(l);
+        elasticEnergy_ += ellipsoids.elastic(l);
+        bodies_.torque(i) += ellipsoids.torqueA(l);
+        bodies_.torque(j) -= ellipsoids.minusTorqueB(l);
+        const vector F = ellipsoids.F(l);
+        bodies_.force(i) += F;
+        bodies_.force(j) -= F;
+    };
 
     auto takeEffect = [&]()
     {
-        if (nLanes > 0)
+        if (nSphereLanes > 0)
         {
-            batch.evaluate(nLanes, deltaT_);
+            spheres.evaluate(nSphereLanes, deltaT_);
+        }
+        if (nEllipsoidLanes > 0)
+        {
+            ellipsoids.evaluate(nEllipsoidLanes);
+            if (ellipsoidKicks)
+            {
+                ellipsoids.kick(nEllipsoidLanes, deltaT_);
+            }
         }
         for (label q = 0; q < nQueued; ++q)
         {
-            const label i = queue[q].i, k = queue[q].k, l = queue[q].lane;
-            if (l < 0)
+            const waiting& w = queue[q];
+            switch (w.by)
             {
-                realRealPair(i, k);
-                continue;
+                case path::scalar: realRealPair(w.i, w.k); break;
+                case path::sphere: sphereEffect(w.i, w.k, w.lane); break;
+                case path::ellipsoid: ellipsoidEffect(w.i, w.k, w.lane); break;
             }
-            if (!batch.contact(l))
-            {
-                histories_.setTouching(k, false);
-                continue;
-            }
-            const label j = list_.partner(k);
-            const scalar twoDeltaBl =
-                bodies_[i].deltaBl + bodies_[j].deltaBl;
-            if
-            (
-                batch.needsScalar(l)
-             || (twoDeltaBl > 0 && batch.overlap(l) > 0.5*twoDeltaBl)
-            )
-            {
-                realRealPair(i, k);
-                continue;
-            }
-
-            // pairForce's effects (real pairs book all of their energy)
-            histories_.setTouching(k, true);
-            histories_.xi(k) = batch.xi(l);
-            nPairSides_ += 2;
-            dissipatedEnergy_ += batch.dissipated(l);
-            elasticEnergy_ += batch.elastic(l);
-            bodies_.torque(i) += batch.torqueA(l);
-            bodies_.torque(j) -= batch.torqueAboutB(l);
-            const vector F = batch.F(l);
-            bodies_.force(i) += F;
-            bodies_.force(j) -= F;
         }
         nQueued = 0;
-        nLanes = 0;
+        nSphereLanes = 0;
+        nEllipsoidLanes = 0;
     };
 
     for (label i = 0; i < bodies_.size(); ++i)
@@ -921,30 +1057,73 @@ void Foam::EllipsoidCollision<CloudType>::sphereBatchInteraction()
         {
             const label j = list_.partner(k);
             const contactBody& B = bodies_[j];
+            const point& xB = bodies_.x(j);
             const label pairi = A.material*nMaterials_ + B.material;
-            if (!(A.sphere && B.sphere) || pp_[pairi].muR > 0)
+            if (pairApart(k, A, xA, B, xB))
             {
-                queue[nQueued++] = {i, k, -1};
+                // Only the pair's own history changed: nothing to queue
+                continue;
             }
-            else
+            waiting w{i, k, -1, path::scalar};
+            if (A.sphere && B.sphere)
             {
-                const point& xB = bodies_.x(j);
-                if (magSqr(xA - xB) > sqr(A.radius + B.radius))
+                if (sphereLanes && !(pp_[pairi].muR > 0))
                 {
-                    histories_.setTouching(k, false);
-                    continue;
+                    spheres.setLane
+                    (
+                        nSphereLanes,
+                        xA, A.radius, A.U, A.omega, A.mass,
+                        xB, B.radius, B.U, B.omega, B.mass,
+                        batchLaws_[pairi],
+                        histories_.touching(k)
+                      ? histories_.xi(k) : vector(Zero)
+                    );
+                    w = {i, k, nSphereLanes++, path::sphere};
                 }
-                batch.setLane
-                (
-                    nLanes,
-                    xA, A.radius, A.U, A.omega, A.mass,
-                    xB, B.radius, B.U, B.omega, B.mass,
-                    batchLaws_[pairi],
-                    histories_.touching(k) ? histories_.xi(k) : vector(Zero)
-                );
-                queue[nQueued++] = {i, k, nLanes++};
             }
-            if (nLanes == sphereContactBatch::width || nQueued == queueSize)
+            else if
+            (
+                // A lasting contact with a tracked direction and its
+                // extrapolation: what listPairGeometry starts from
+                ellipsoidLanes && histories_.touching(k)
+             && A.shell >= 0 && B.shell >= 0
+             && !(histories_.apartUntil(k) > 0)
+             && !(ellipsoidKicks && pp_[pairi].muR > 0)
+            )
+            {
+                const vector& n = histories_.direction(k);
+                const vector start = n + histories_.directionChange(k);
+                const ellipsoid& eA = bodies_.shell(A);
+                const ellipsoid& eB = bodies_.shell(B);
+                if
+                (
+                    magSqr(n) > 0 && magSqr(start) > 0
+                 && !(eA.isSphere() && eB.isSphere())
+                )
+                {
+                    ellipsoids.setLane(nEllipsoidLanes, eA, eB, start);
+                    if (ellipsoidKicks)
+                    {
+                        ellipsoids.setBodies
+                        (
+                            nEllipsoidLanes,
+                            xA, A.U, A.omega, A.mass,
+                            bodies_.inverseInertiaOf(A),
+                            xB, B.U, B.omega, B.mass,
+                            bodies_.inverseInertiaOf(B),
+                            batchLaws_[pairi], histories_.xi(k)
+                        );
+                    }
+                    w = {i, k, nEllipsoidLanes++, path::ellipsoid};
+                }
+            }
+            queue[nQueued++] = w;
+            if
+            (
+                nSphereLanes == sphereContactBatch::width
+             || nEllipsoidLanes == ellipsoidContactBatch::width
+             || nQueued == queueSize
+            )
             {
                 takeEffect();
             }
@@ -957,15 +1136,19 @@ void Foam::EllipsoidCollision<CloudType>::sphereBatchInteraction()
 template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
 {
-    // The batch takes what pairForce does with the default law's parts
-    // (not the listing of the contacts), for beds with spheres
-    if
-    (
+    // The sphere batch takes what pairForce does with the default law's
+    // parts (not the listing of the contacts), for beds with spheres; the
+    // ellipsoid batch the narrow phase of the default method, for beds
+    // with ellipsoids
+    const bool sphereLanes =
         batchLaws_.size() && !recordContacts_
-     && bodies_.nShells() < bodies_.size()
-    )
+     && bodies_.nShells() < bodies_.size();
+    const bool ellipsoidLanes =
+        method_ == ellipsoidContact::method::automatic
+     && bodies_.nShells() > 0;
+    if (sphereLanes || ellipsoidLanes)
     {
-        sphereBatchInteraction();
+        batchInteraction(sphereLanes, ellipsoidLanes);
         return;
     }
     for (label i = 0; i < bodies_.size(); ++i)
@@ -1145,8 +1328,8 @@ void Foam::EllipsoidCollision<CloudType>::wallFaceContact
     contactWork work{0, 0};
     const vector F = wallContact_.force
     (
-        law, c, vRel, b.mass, bodies_.normalMobility(b, xp, xc, c.n), deltaT_, xi,
-        dUdR, work
+        law, c, vRel, b.mass, bodies_.normalMobility(b, xp, xc, c.n),
+        deltaT_, xi, dUdR, work
     );
     dissipatedEnergy_ += work.dissipated;
     elasticEnergy_ += work.elastic;

@@ -114,9 +114,9 @@ Foam::scalar Foam::normalContactLaws::hertzDashpot::force
     contactWork& work
 ) const
 {
-    // sphereContactBatch.C repeats these operations for sphere pairs in
-    // SIMD lanes: a change here goes there too (its unit test compares
-    // the two bit for bit)
+    // contactLawLanes.H repeats these operations for the batches of
+    // contacts in SIMD lanes: a change here goes there too (the batches'
+    // unit tests compare the two bit for bit)
     const scalar delta = k.delta;
     const scalar vn = k.vn;
     const scalar dt = k.dt;

@@ -34,9 +34,9 @@ void Foam::tangentialContactLaws::mindlinSpring::addForce
     contactWork& work
 ) const
 {
-    // sphereContactBatch.C repeats these operations for sphere pairs in
-    // SIMD lanes: a change here goes there too (its unit test compares
-    // the two bit for bit)
+    // contactLawLanes.H repeats these operations for the batches of
+    // contacts in SIMD lanes: a change here goes there too (the batches'
+    // unit tests compare the two bit for bit)
     const vector& n = k.n;
     const vector& vt = k.vt;
     const scalar dt = k.dt;
