@@ -223,7 +223,10 @@ TEST(mindlinSpring, boundedByFrictionAndNeverCreatesEnergy)
         {
             // random normals near x, overlaps and relative velocities
             ellipsoidContact::result c = normalContact(delta, 5e-4);
-            c.n = vector(1, 0.1*rnd.GaussNormal<scalar>(), 0.1*rnd.GaussNormal<scalar>());
+            c.n = vector
+            (
+                1, 0.1*rnd.GaussNormal<scalar>(), 0.1*rnd.GaussNormal<scalar>()
+            );
             c.n /= mag(c.n);
             const vector vRel = 1e-3*rnd.GaussNormal<vector>();
             scalar dUdR;
@@ -531,12 +534,16 @@ TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
             5e-4*(1 + 0.5*rnd.sample01<scalar>()),
             5e-4
         );
-        const quaternion q(rnd.GaussNormal<scalar>(), rnd.GaussNormal<vector>());
+        const quaternion q
+        (
+            rnd.GaussNormal<scalar>(), rnd.GaussNormal<vector>()
+        );
         const ellipsoid e(axes, centre, q);
         m = rho*4.19*axes.x()*axes.y()*axes.z();
         const vector I = rigidBodyRotation::principalMoments(m, axes);
         const tensor& R = e.R();
-        invI = symm(R & tensor(1/I.x(), 0, 0, 0, 1/I.y(), 0, 0, 0, 1/I.z()) & R.T());
+        const tensor Iinv(1/I.x(), 0, 0, 0, 1/I.y(), 0, 0, 0, 1/I.z());
+        invI = symm(R & Iinv & R.T());
         return e;
     };
 
@@ -548,7 +555,8 @@ TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
         {
             scalar mA, mB;
             symmTensor invIA, invIB;
-            const ellipsoid e1 = randomBody(vector(0.01, -0.02, 0.03), mA, invIA);
+            const ellipsoid e1 =
+                randomBody(vector(0.01, -0.02, 0.03), mA, invIA);
             const vector u = rnd.GaussNormal<vector>();
             const vector du = u/mag(u);
             // Touching at the centre distance sOut along u (bisection),
@@ -583,7 +591,8 @@ TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
             laneInput x
             {
                 e1, e2, start,
-                0.005*rnd.GaussNormal<vector>(), 0.005*rnd.GaussNormal<vector>(),
+                0.005*rnd.GaussNormal<vector>(),
+                0.005*rnd.GaussNormal<vector>(),
                 5*rnd.GaussNormal<vector>(), 5*rnd.GaussNormal<vector>(),
                 vector(Zero), mA, mB, invIA, invIB,
                 rnd.sample01<scalar>() < 0.5 ? 0 : 1
