@@ -634,6 +634,11 @@ scalar certifiedGap(const ellipsoid& e1, const ellipsoid& e2, const scalar g)
 }
 
 
+// ellipsoidContactBatch.C repeats, in SIMD lanes, what this run does for a
+// lasting contact started near its normal (the depth, pure Newton steps,
+// the certificate, commonNormalResult with radiusGradientAndCurvature,
+// curvatureAlong, tangents, depthFunction): a change here or there goes
+// to both (the batch's unit tests compare them bit for bit)
 certificate certifiedSingleStart
 (
     const ellipsoid& e1,

@@ -69,6 +69,34 @@ dictionary lawDict
 }
 
 
+// The first step of a contact, or the last (the next drift ends without
+// overlap at the speed the uncorrected kick leaves): hertzDashpot's onset
+// correction applies, and the batches of contacts leave the kick to the
+// scalar path
+bool onsetCorrected
+(
+    const contactProperties& p,
+    const ellipsoidContact::result& c,
+    const vector& vRel,
+    const scalar mStar,
+    const scalar invMassNormal,
+    const scalar dt
+)
+{
+    const scalar vn = vRel & c.n;
+    const scalar sqrtR = Foam::sqrt(c.reducedRadius);
+    const scalar sqrtRdelta = sqrtR*Foam::sqrt(c.overlap);
+    const scalar etaN =
+        2*Foam::sqrt(5.0/6.0)*mag(p.beta)
+       *Foam::sqrt(2*p.Estar*sqrtRdelta*mStar);
+    const scalar kHertz = (4.0/3.0)*p.Estar*sqrtR;
+    const scalar Fe = kHertz*(c.overlap*Foam::sqrt(c.overlap));
+    const scalar vnNext =
+        vn - dt*max(Fe + etaN*vn, scalar(0))*invMassNormal;
+    return c.overlap <= vn*dt || c.overlap + vnNext*dt <= 0;
+}
+
+
 // A normal contact of overlap delta against a wall along +x
 ellipsoidContact::result normalContact(const scalar delta, const scalar R)
 {
@@ -427,23 +455,9 @@ TEST(sphereContactBatch, isTheScalarPathBitForBit)
               - (x.UB + (x.omegaB ^ (xc - x.xB)));
             const scalar mStar = x.mA*x.mB/(x.mA + x.mB);
             const scalar invMassNormal = 1/x.mA + 1/x.mB;
-            const scalar vn = vRel & c.n;
-
-            // The first step of a contact, or the last (the next drift
-            // ends without overlap at the speed the uncorrected kick
-            // leaves): hertzDashpot's onset correction
             const contactProperties& p = props[x.material];
-            const scalar sqrtR = Foam::sqrt(c.reducedRadius);
-            const scalar sqrtRdelta = sqrtR*Foam::sqrt(c.overlap);
-            const scalar etaN =
-                2*Foam::sqrt(5.0/6.0)*mag(p.beta)
-               *Foam::sqrt(2*p.Estar*sqrtRdelta*mStar);
-            const scalar kHertz = (4.0/3.0)*p.Estar*sqrtR;
-            const scalar Fe = kHertz*(c.overlap*Foam::sqrt(c.overlap));
-            const scalar vnNext =
-                vn - dt*max(Fe + etaN*vn, scalar(0))*invMassNormal;
             const bool corrected =
-                c.overlap <= vn*dt || c.overlap + vnNext*dt <= 0;
+                onsetCorrected(p, c, vRel, mStar, invMassNormal, dt);
             if (batch.needsScalar(l))
             {
                 ++nScalar;
@@ -469,7 +483,7 @@ TEST(sphereContactBatch, isTheScalarPathBitForBit)
             if
             (
                 batch.F(l) != F || batch.torqueA(l) != MA
-             || batch.torqueAboutB(l) != MB || batch.xi(l) != xi
+             || batch.minusTorqueB(l) != MB || batch.xi(l) != xi
              || batch.dissipated(l) != work.dissipated
              || batch.elastic(l) != work.elastic
             )
@@ -651,20 +665,9 @@ TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
                 (1/x.mA + (rnA & (x.invIA & rnA)))
               + (1/x.mB + (rnB & (x.invIB & rnB)));
 
-            // The last step of a contact: hertzDashpot's onset correction
             const contactProperties& p = props[x.material];
-            const scalar vn = vRel & c.n;
-            const scalar sqrtR = Foam::sqrt(c.reducedRadius);
-            const scalar sqrtRdelta = sqrtR*Foam::sqrt(c.overlap);
-            const scalar etaN =
-                2*Foam::sqrt(5.0/6.0)*mag(p.beta)
-               *Foam::sqrt(2*p.Estar*sqrtRdelta*mStar);
-            const scalar kHertz = (4.0/3.0)*p.Estar*sqrtR;
-            const scalar Fe = kHertz*(c.overlap*Foam::sqrt(c.overlap));
-            const scalar vnNext =
-                vn - dt*max(Fe + etaN*vn, scalar(0))*invMassNormal;
             const bool corrected =
-                c.overlap <= vn*dt || c.overlap + vnNext*dt <= 0;
+                onsetCorrected(p, c, vRel, mStar, invMassNormal, dt);
             if (batch.needsScalar(l))
             {
                 ++nScalar;

@@ -90,8 +90,8 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
     // +0, as there)
     const lanes3 none{zero, zero, zero};
     store3(F_, k.F);
-    store3(MA_, cross(xc - xA, k.F) + none);
-    store3(MB_, cross(xc - xB, k.F) + none);
+    store3(torqueA_, cross(xc - xA, k.F) + none);
+    store3(torqueB_, cross(xc - xB, k.F) + none);
     store3(xi_, xi);
     store(overlap_, overlap);
     store(dissipated_, k.dissipated);

@@ -931,7 +931,7 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
     // narrow phase off the lasting contact's pattern) or whose overlap
     // passes half the buffer layers (the warning) is done one by one
     // there: nothing of its pair has changed since it was queued
-    const label queueSize = 4*sphereContactBatch::width;
+    const label queueSize = 4*contactBatchKicks::width;
     enum class path { scalar, sphere, ellipsoid };
     struct waiting
     {
@@ -947,36 +947,62 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
     // (the default law's parts, no listing of the contacts)
     const bool ellipsoidKicks = batchLaws_.size() && !recordContacts_;
 
+    // A lane left to the scalar path: a contact's first or last step (the
+    // onset correction), or an overlap beyond half the buffer layers (the
+    // warning)
+    auto scalarKick = [&]
+    (
+        const label i,
+        const label k,
+        const contactBatchKicks& batch,
+        const label l,
+        const scalar overlap
+    )
+    {
+        const scalar twoDeltaBl =
+            bodies_[i].deltaBl + bodies_[list_.partner(k)].deltaBl;
+        return
+            batch.needsScalar(l)
+         || (twoDeltaBl > 0 && overlap > 0.5*twoDeltaBl);
+    };
+
+    // pairForce's effects of a lane's kick (real pairs book all of their
+    // energy)
+    auto kickEffect = [&]
+    (
+        const label i,
+        const label k,
+        const contactBatchKicks& batch,
+        const label l
+    )
+    {
+        const label j = list_.partner(k);
+        histories_.setTouching(k, true);
+        histories_.xi(k) = batch.xi(l);
+        nPairSides_ += 2;
+        dissipatedEnergy_ += batch.dissipated(l);
+        elasticEnergy_ += batch.elastic(l);
+        bodies_.torque(i) += batch.torqueA(l);
+        bodies_.torque(j) -= batch.minusTorqueB(l);
+        const vector F = batch.F(l);
+        bodies_.force(i) += F;
+        bodies_.force(j) -= F;
+    };
+
     auto sphereEffect = [&](const label i, const label k, const label l)
     {
         if (!spheres.contact(l))
         {
             histories_.setTouching(k, false);
-            return;
         }
-        const label j = list_.partner(k);
-        const scalar twoDeltaBl = bodies_[i].deltaBl + bodies_[j].deltaBl;
-        if
-        (
-            spheres.needsScalar(l)
-         || (twoDeltaBl > 0 && spheres.overlap(l) > 0.5*twoDeltaBl)
-        )
+        else if (scalarKick(i, k, spheres, l, spheres.overlap(l)))
         {
             realRealPair(i, k);
-            return;
         }
-
-        // pairForce's effects (real pairs book all of their energy)
-        histories_.setTouching(k, true);
-        histories_.xi(k) = spheres.xi(l);
-        nPairSides_ += 2;
-        dissipatedEnergy_ += spheres.dissipated(l);
-        elasticEnergy_ += spheres.elastic(l);
-        bodies_.torque(i) += spheres.torqueA(l);
-        bodies_.torque(j) -= spheres.torqueAboutB(l);
-        const vector F = spheres.F(l);
-        bodies_.force(i) += F;
-        bodies_.force(j) -= F;
+        else
+        {
+            kickEffect(i, k, spheres, l);
+        }
     };
 
     auto ellipsoidEffect = [&](const label i, const label k, const label l)
@@ -984,40 +1010,24 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
         if (!ellipsoids.decided(l))
         {
             realRealPair(i, k);
-            return;
         }
-        if (!ellipsoidKicks)
+        else if (!ellipsoidKicks)
         {
             // listPairGeometry's effects, then the contact
             const ellipsoidContact::result c = ellipsoids.contact(l);
             keepLastingTrack(k, c.n);
             realRealContact(i, k, c);
-            return;
         }
-        const label j = list_.partner(k);
-        const scalar twoDeltaBl = bodies_[i].deltaBl + bodies_[j].deltaBl;
-        if
-        (
-            ellipsoids.needsScalar(l)
-         || (twoDeltaBl > 0 && ellipsoids.overlap(l) > 0.5*twoDeltaBl)
-        )
+        else if (scalarKick(i, k, ellipsoids, l, ellipsoids.overlap(l)))
         {
             realRealPair(i, k);
-            return;
         }
-
-        // listPairGeometry's and pairForce's effects (real pairs book all
-        // of their energy)
-        keepLastingTrack(k, ellipsoids.normal(l));
-        histories_.xi(k) = ellipsoids.xi(l);
-        nPairSides_ += 2;
-        dissipatedEnergy_ += ellipsoids.dissipated(l);
-        elasticEnergy_ += ellipsoids.elastic(l);
-        bodies_.torque(i) += ellipsoids.torqueA(l);
-        bodies_.torque(j) -= ellipsoids.minusTorqueB(l);
-        const vector F = ellipsoids.F(l);
-        bodies_.force(i) += F;
-        bodies_.force(j) -= F;
+        else
+        {
+            // listPairGeometry's effects, then the kick's
+            keepLastingTrack(k, ellipsoids.normal(l));
+            kickEffect(i, k, ellipsoids, l);
+        }
     };
 
     auto takeEffect = [&]()
