@@ -675,8 +675,10 @@ inline void Foam::EllipsoidCollision<CloudType>::keepTrack
     histories_.directionChange(k) = lasting ? n - before : vector(Zero);
 
     // Separated along n: so while the bodies travel less than the gap
+    // (ContactBodies sums the travel of the bodies with a shell: a pair
+    // with a sphere keeps no gap)
     histories_.apartUntil(k) =
-        c.separation > 0
+        c.separation > 0 && A.shell >= 0 && B.shell >= 0
       ? bodies_.travel(A) + bodies_.travel(B) + c.separation
       : 0;
 }
