@@ -20,6 +20,9 @@ static_assert
 namespace
 {
 
+using Foam::scalar;
+using Foam::label;
+
 // Each function repeats the operations of its namesake in
 // ellipsoidContact.C (a change there goes here too; the unit test compares
 // the two bit for bit)
@@ -99,94 +102,33 @@ inline void curvatureAlong
     gradK = g - dot(g, n)*n;
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::ellipsoidContactBatch::pad(const label n)
+// newtonOnSphere with stopWhenSeparated from s, pure Newton steps only
+// (newtonStep with mu = 0, a step below 1e-4 rad taken whole): lanes still
+// iterating (active), converged with the frame (converged), or left to the
+// scalar path (off); L the length scale of the tolerances
+inline depthState pureNewton
+(
+    const lanesSymm& M1,
+    const lanesSymm& M2,
+    const lanes3& d,
+    depthState s,
+    const lanes L,
+    laneMask& off,
+    lanes& iterations
+)
 {
-    for (label l = n; l < width; ++l)
-    {
-        for (label c = 0; c < 6; ++c)
-        {
-            Sinv1_[c][l] = Sinv1_[c][0];
-            Sinv2_[c][l] = Sinv2_[c][0];
-            S1_[c][l] = S1_[c][0];
-            S2_[c][l] = S2_[c][0];
-        }
-        for (label c = 0; c < 3; ++c)
-        {
-            c1_[c][l] = c1_[c][0];
-            c2_[c][l] = c2_[c][0];
-            nTrack_[c][l] = nTrack_[c][0];
-        }
-        reach_[l] = reach_[0];
-        rolling_[l] = rolling_[0];
-    }
-}
-
-
-void Foam::ellipsoidContactBatch::padKick(const label n)
-{
-    for (label l = n; l < width; ++l)
-    {
-        for (label c = 0; c < 3; ++c)
-        {
-            xA_[c][l] = xA_[c][0];
-            xB_[c][l] = xB_[c][0];
-            UA_[c][l] = UA_[c][0];
-            UB_[c][l] = UB_[c][0];
-            omegaA_[c][l] = omegaA_[c][0];
-            omegaB_[c][l] = omegaB_[c][0];
-            xi_[c][l] = xi_[c][0];
-        }
-        for (label c = 0; c < 6; ++c)
-        {
-            invIA_[c][l] = invIA_[c][0];
-            invIB_[c][l] = invIB_[c][0];
-        }
-        mA_[l] = mA_[0];
-        mB_[l] = mB_[0];
-    }
-    law_.pad(n);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-void Foam::ellipsoidContactBatch::evaluate(const label nLanes)
-{
-    pad(nLanes);
-
     const lanes zero = broadcast(0), one = broadcast(1);
     const lanes half = broadcast(0.5);
-    const lanesSymm M1 = loadSymm(Sinv1_), M2 = loadSymm(Sinv2_);
-    const lanes3 c1 = load3(c1_), c2 = load3(c2_);
-
-    // contact(e1, e2, nTrack): bounding spheres apart
-    const lanes3 d = c2 - c1;
-    const lanes reach = load(reach_);
-    laneMask off = dot(d, d) > reach*reach;
-
-    // certifiedSingleStart: the depth at the tracked direction, separated
-    // there, or coincident centres
-    const lanes3 nTrack = load3(nTrack_);
-    depthState s =
-        eval(M1, M2, d, nTrack*(one/sqrtOf(dot(nTrack, nTrack))));
-    const lanes dist = sqrtOf(dot(d, d));
-    off |= (s.g < zero) | ~(dist > zero);
-    const lanes L = reach + dist;
     const lanes tolG =
         broadcast(64*std::numeric_limits<scalar>::epsilon())*L;
-
-    // newtonOnSphere with stopWhenSeparated, pure Newton steps only: lanes
-    // still iterating (active), converged with the frame (converged), or
-    // left to the scalar path (off)
     laneMask active = ~off;
     laneMask converged = active & ~active;
-    lanes iterations = zero;
-    for (label iter = 0; iter < maxIterations; ++iter)
+    for
+    (
+        label iter = 0;
+        iter < Foam::ellipsoidContactBatch::maxIterations;
+        ++iter
+    )
     {
         off |= active & (s.g < zero);
         active &= ~off;
@@ -255,6 +197,168 @@ void Foam::ellipsoidContactBatch::evaluate(const label nLanes)
         active &= ~off;
     }
     off |= active | ~converged;
+    return s;
+}
+
+
+// radiusGradientAndCurvature's results; KsumSafe: K1 + K2, 1 in the lanes
+// that are off
+struct radiusLanes
+{
+    lanes KsumSafe;
+    lanes3 centre1, rotation1, centre2, rotation2;
+};
+
+// radiusGradientAndCurvature at the common normal s.m of the state s, with
+// its frame (t1, t2) and reciprocals, the overlap and the contact points
+// relative to the centres (r1, r2)
+inline radiusLanes radiusGradientAndCurvature
+(
+    const lanesSymm& S1,
+    const lanesSymm& S2,
+    const lanesSymm& M1,
+    const lanesSymm& M2,
+    const depthState& s,
+    const lanes hInv1,
+    const lanes hInv2,
+    const lanes3& t1,
+    const lanes3& t2,
+    const lanes overlap,
+    const lanes3& r1,
+    const lanes3& r2,
+    const laneMask off
+)
+{
+    const lanes zero = broadcast(0), one = broadcast(1);
+    const lanes half = broadcast(0.5);
+    const lanes3& n = s.m;
+    lanes K1, K2;
+    lanes3 gradK1, gradK2;
+    curvatureAlong(S1, n, s.w1, s.h1, hInv1, K1, gradK1);
+    curvatureAlong(S2, n, s.w2, s.h2, hInv2, K2, gradK2);
+    const lanes Ksum = K1 + K2;
+    const lanes3 G = gradK1 + gradK2;
+    const lanes hInv31 = hInv1*hInv1*hInv1, hInv32 = hInv2*hInv2*hInv2;
+    const lanes3 D1t1 = curvatureTerm(M1, s.w1, hInv1, hInv31, t1);
+    const lanes3 D1t2 = curvatureTerm(M1, s.w1, hInv1, hInv31, t2);
+    const lanes3 D2t1 = curvatureTerm(M2, s.w2, hInv2, hInv32, t1);
+    const lanes3 D2t2 = curvatureTerm(M2, s.w2, hInv2, hInv32, t2);
+    const lanes3 Dt1 = D1t1 + D2t1;
+    const lanes3 Dt2 = D1t2 + D2t2;
+    const lanes H11 = dot(t1, Dt1) - overlap;
+    const lanes H22 = dot(t2, Dt2) - overlap;
+    const lanes H12 = half*(dot(t1, Dt2) + dot(t2, Dt1));
+    const lanes det = H11*H22 - H12*H12;
+
+    // Not a strict minimum of the depth: gradR zero
+    const laneMask smooth = (det > zero) & (H11 > zero);
+    const lanes safeDet = smooth ? det : one;
+    const lanes Gt1 = dot(t1, G), Gt2 = dot(t2, G);
+    const lanes w1 = (H22*Gt1 - H12*Gt2)/safeDet;
+    const lanes w2 = (H11*Gt2 - H12*Gt1)/safeDet;
+    const lanes3 w = w1*t1 + w2*t2;
+
+    radiusLanes r;
+    r.KsumSafe = off ? one : Ksum;
+    const lanes R2 = one/(r.KsumSafe*r.KsumSafe);
+    const lanes3 none{zero, zero, zero};
+    r.centre1 = choose(smooth, R2*w, none);
+    r.centre2 = choose(smooth, (-R2)*w, none);
+    r.rotation1 = choose
+    (
+        smooth,
+        (-R2)
+       *(cross(n, w1*D1t1 + w2*D1t2) - cross(r1, w) - cross(n, gradK1)),
+        none
+    );
+    r.rotation2 = choose
+    (
+        smooth,
+        (-R2)
+       *(cross(n, w1*D2t1 + w2*D2t2) + cross(r2, w) - cross(n, gradK2)),
+        none
+    );
+    return r;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::ellipsoidContactBatch::pad(const label n)
+{
+    for (label l = n; l < width; ++l)
+    {
+        for (label c = 0; c < 6; ++c)
+        {
+            Sinv1_[c][l] = Sinv1_[c][0];
+            Sinv2_[c][l] = Sinv2_[c][0];
+            S1_[c][l] = S1_[c][0];
+            S2_[c][l] = S2_[c][0];
+        }
+        for (label c = 0; c < 3; ++c)
+        {
+            c1_[c][l] = c1_[c][0];
+            c2_[c][l] = c2_[c][0];
+            nTrack_[c][l] = nTrack_[c][0];
+        }
+        reach_[l] = reach_[0];
+        rolling_[l] = rolling_[0];
+    }
+}
+
+
+void Foam::ellipsoidContactBatch::padKick(const label n)
+{
+    for (label l = n; l < width; ++l)
+    {
+        for (label c = 0; c < 3; ++c)
+        {
+            xA_[c][l] = xA_[c][0];
+            xB_[c][l] = xB_[c][0];
+            UA_[c][l] = UA_[c][0];
+            UB_[c][l] = UB_[c][0];
+            omegaA_[c][l] = omegaA_[c][0];
+            omegaB_[c][l] = omegaB_[c][0];
+            xi_[c][l] = xi_[c][0];
+        }
+        for (label c = 0; c < 6; ++c)
+        {
+            invIA_[c][l] = invIA_[c][0];
+            invIB_[c][l] = invIB_[c][0];
+        }
+        mA_[l] = mA_[0];
+        mB_[l] = mB_[0];
+    }
+    law_.pad(n);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::ellipsoidContactBatch::evaluate(const label nLanes)
+{
+    pad(nLanes);
+
+    const lanes zero = broadcast(0), one = broadcast(1);
+    const lanesSymm M1 = loadSymm(Sinv1_), M2 = loadSymm(Sinv2_);
+    const lanes3 c1 = load3(c1_), c2 = load3(c2_);
+
+    // contact(e1, e2, nTrack): bounding spheres apart
+    const lanes3 d = c2 - c1;
+    const lanes reach = load(reach_);
+    laneMask off = dot(d, d) > reach*reach;
+
+    // certifiedSingleStart: the depth at the tracked direction, separated
+    // there, or coincident centres
+    const lanes3 nTrack = load3(nTrack_);
+    depthState s =
+        eval(M1, M2, d, nTrack*(one/sqrtOf(dot(nTrack, nTrack))));
+    const lanes dist = sqrtOf(dot(d, d));
+    off |= (s.g < zero) | ~(dist > zero);
+    lanes iterations = zero;
+    s = pureNewton(M1, M2, d, s, reach + dist, off, iterations);
 
     // The converging iteration's reciprocals and frame (the same
     // operations on the same state)
@@ -266,58 +370,24 @@ void Foam::ellipsoidContactBatch::evaluate(const label nLanes)
     off |= ~((s.g > zero) & (s.g < broadcast(0.9)*load(rolling_)));
 
     // commonNormalResult
-    const lanes3& n = s.m;
     const lanes3 x1 = c1 + s.w1*hInv1;
     const lanes3 x2 = c2 - s.w2*hInv2;
     const lanes overlap = maxOf(s.g, zero);
+    const radiusLanes r = radiusGradientAndCurvature
+    (
+        loadSymm(S1_), loadSymm(S2_), M1, M2, s, hInv1, hInv2, t1, t2,
+        overlap, x1 - c1, x2 - c2, off
+    );
 
-    // radiusGradientAndCurvature
-    lanes K1, K2;
-    lanes3 gradK1, gradK2;
-    curvatureAlong(loadSymm(S1_), n, s.w1, s.h1, hInv1, K1, gradK1);
-    curvatureAlong(loadSymm(S2_), n, s.w2, s.h2, hInv2, K2, gradK2);
-    const lanes Ksum = K1 + K2;
-    const lanes3 G = gradK1 + gradK2;
-    const lanes hInv31s = hInv1*hInv1*hInv1, hInv32s = hInv2*hInv2*hInv2;
-    const lanes3 D1t1 = curvatureTerm(M1, s.w1, hInv1, hInv31s, t1);
-    const lanes3 D1t2 = curvatureTerm(M1, s.w1, hInv1, hInv31s, t2);
-    const lanes3 D2t1 = curvatureTerm(M2, s.w2, hInv2, hInv32s, t1);
-    const lanes3 D2t2 = curvatureTerm(M2, s.w2, hInv2, hInv32s, t2);
-    const lanes3 Dt1 = D1t1 + D2t1;
-    const lanes3 Dt2 = D1t2 + D2t2;
-    const lanes Hc11 = dot(t1, Dt1) - overlap;
-    const lanes Hc22 = dot(t2, Dt2) - overlap;
-    const lanes Hc12 = half*(dot(t1, Dt2) + dot(t2, Dt1));
-    const lanes det = Hc11*Hc22 - Hc12*Hc12;
-
-    // Not a strict minimum of the depth: gradR zero
-    const laneMask smooth = (det > zero) & (Hc11 > zero);
-    const lanes safeDet = smooth ? det : one;
-    const lanes Gt1 = dot(t1, G), Gt2 = dot(t2, G);
-    const lanes w1 = (Hc22*Gt1 - Hc12*Gt2)/safeDet;
-    const lanes w2 = (Hc11*Gt2 - Hc12*Gt1)/safeDet;
-    const lanes3 w = w1*t1 + w2*t2;
-    const lanes KsumSafe = off ? one : Ksum;
-    const lanes R2 = one/(KsumSafe*KsumSafe);
-    const lanes3 r1 = x1 - c1;
-    const lanes3 r2 = x2 - c2;
-    const lanes3 none{zero, zero, zero};
-    const lanes3 rotation1 =
-        (-R2)
-       *(cross(n, w1*D1t1 + w2*D1t2) - cross(r1, w) - cross(n, gradK1));
-    const lanes3 rotation2 =
-        (-R2)
-       *(cross(n, w1*D2t1 + w2*D2t2) + cross(r2, w) - cross(n, gradK2));
-
-    store3(n_, n);
+    store3(n_, s.m);
     store3(x1_, x1);
     store3(x2_, x2);
     store(overlap_, overlap);
-    store(R_, one/KsumSafe);
-    store3(gradRc1_, choose(smooth, R2*w, none));
-    store3(gradRc2_, choose(smooth, (-R2)*w, none));
-    store3(gradRr1_, choose(smooth, rotation1, none));
-    store3(gradRr2_, choose(smooth, rotation2, none));
+    store(R_, one/r.KsumSafe);
+    store3(gradRc1_, r.centre1);
+    store3(gradRc2_, r.centre2);
+    store3(gradRr1_, r.rotation1);
+    store3(gradRr2_, r.rotation2);
     for (label l = 0; l < nLanes; ++l)
     {
         decided_[l] = !off[l];

@@ -916,6 +916,159 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealContact
 
 
 template<class CloudType>
+inline bool Foam::EllipsoidCollision<CloudType>::laneToScalarPath
+(
+    const label i,
+    const label k,
+    const contactBatchKicks& batch,
+    const label l,
+    const scalar overlap
+) const
+{
+    // A contact's first or last step (the onset correction), or an overlap
+    // beyond half the buffer layers (the warning)
+    const scalar twoDeltaBl =
+        bodies_[i].deltaBl + bodies_[list_.partner(k)].deltaBl;
+    return
+        batch.needsScalar(l)
+     || (twoDeltaBl > 0 && overlap > 0.5*twoDeltaBl);
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::laneKickEffect
+(
+    const label i,
+    const label k,
+    const contactBatchKicks& batch,
+    const label l
+)
+{
+    // pairForce's effects (real pairs book all of their energy)
+    const label j = list_.partner(k);
+    histories_.setTouching(k, true);
+    histories_.xi(k) = batch.xi(l);
+    nPairSides_ += 2;
+    dissipatedEnergy_ += batch.dissipated(l);
+    elasticEnergy_ += batch.elastic(l);
+    bodies_.torque(i) += batch.torqueA(l);
+    bodies_.torque(j) -= batch.minusTorqueB(l);
+    const vector F = batch.F(l);
+    bodies_.force(i) += F;
+    bodies_.force(j) -= F;
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::sphereLaneEffect
+(
+    const label i,
+    const label k,
+    const sphereContactBatch& batch,
+    const label l
+)
+{
+    if (!batch.contact(l))
+    {
+        histories_.setTouching(k, false);
+    }
+    else if (laneToScalarPath(i, k, batch, l, batch.overlap(l)))
+    {
+        realRealPair(i, k);
+    }
+    else
+    {
+        laneKickEffect(i, k, batch, l);
+    }
+}
+
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::ellipsoidLaneEffect
+(
+    const label i,
+    const label k,
+    const ellipsoidContactBatch& batch,
+    const label l,
+    const bool kicked
+)
+{
+    if (!batch.decided(l))
+    {
+        realRealPair(i, k);
+    }
+    else if (!kicked)
+    {
+        // listPairGeometry's effects, then the contact
+        const ellipsoidContact::result c = batch.contact(l);
+        keepLastingTrack(k, c.n);
+        realRealContact(i, k, c);
+    }
+    else if (laneToScalarPath(i, k, batch, l, batch.overlap(l)))
+    {
+        realRealPair(i, k);
+    }
+    else
+    {
+        // listPairGeometry's effects, then the kick's
+        keepLastingTrack(k, batch.normal(l));
+        laneKickEffect(i, k, batch, l);
+    }
+}
+
+
+template<class CloudType>
+inline bool Foam::EllipsoidCollision<CloudType>::setEllipsoidLane
+(
+    const label i,
+    const label k,
+    ellipsoidContactBatch& batch,
+    const label l,
+    const bool kicked
+)
+{
+    // A lasting contact with a tracked direction and its extrapolation:
+    // what listPairGeometry starts from
+    const contactBody& A = bodies_[i];
+    const contactBody& B = bodies_[list_.partner(k)];
+    const label pairi = A.material*nMaterials_ + B.material;
+    if
+    (
+        !histories_.touching(k) || A.shell < 0 || B.shell < 0
+     || histories_.apartUntil(k) > 0 || (kicked && pp_[pairi].muR > 0)
+    )
+    {
+        return false;
+    }
+    const vector& n = histories_.direction(k);
+    const vector start = n + histories_.directionChange(k);
+    const ellipsoid& eA = bodies_.shell(A);
+    const ellipsoid& eB = bodies_.shell(B);
+    if
+    (
+        !(magSqr(n) > 0) || !(magSqr(start) > 0)
+     || (eA.isSphere() && eB.isSphere())
+    )
+    {
+        return false;
+    }
+    batch.setLane(l, eA, eB, start);
+    if (kicked)
+    {
+        batch.setBodies
+        (
+            l,
+            bodies_.x(i), A.U, A.omega, A.mass, bodies_.inverseInertiaOf(A),
+            bodies_.x(list_.partner(k)), B.U, B.omega, B.mass,
+            bodies_.inverseInertiaOf(B),
+            batchLaws_[pairi], histories_.xi(k)
+        );
+    }
+    return true;
+}
+
+
+template<class CloudType>
 void Foam::EllipsoidCollision<CloudType>::batchInteraction
 (
     const bool sphereLanes,
@@ -929,10 +1082,8 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
     // to go one by one; at a full batch or queue the batches are evaluated
     // and the queue takes effect in order. A pair out of reach or certified
     // apart changes only its own history: at once. A lane that a batch
-    // leaves to the scalar path (a sphere contact's first or last step, a
-    // narrow phase off the lasting contact's pattern) or whose overlap
-    // passes half the buffer layers (the warning) is done one by one
-    // there: nothing of its pair has changed since it was queued
+    // leaves to the scalar path is done one by one there: nothing of its
+    // pair has changed since it was queued
     const label queueSize = 4*contactBatchKicks::width;
     enum class path { scalar, sphere, ellipsoid };
     struct waiting
@@ -947,90 +1098,7 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
 
     // The ellipsoid lanes also take the kick where the sphere lanes may
     // (the default law's parts, no listing of the contacts)
-    const bool ellipsoidKicks = batchLaws_.size() && !recordContacts_;
-
-    // A lane left to the scalar path: a contact's first or last step (the
-    // onset correction), or an overlap beyond half the buffer layers (the
-    // warning)
-    auto scalarKick = [&]
-    (
-        const label i,
-        const label k,
-        const contactBatchKicks& batch,
-        const label l,
-        const scalar overlap
-    )
-    {
-        const scalar twoDeltaBl =
-            bodies_[i].deltaBl + bodies_[list_.partner(k)].deltaBl;
-        return
-            batch.needsScalar(l)
-         || (twoDeltaBl > 0 && overlap > 0.5*twoDeltaBl);
-    };
-
-    // pairForce's effects of a lane's kick (real pairs book all of their
-    // energy)
-    auto kickEffect = [&]
-    (
-        const label i,
-        const label k,
-        const contactBatchKicks& batch,
-        const label l
-    )
-    {
-        const label j = list_.partner(k);
-        histories_.setTouching(k, true);
-        histories_.xi(k) = batch.xi(l);
-        nPairSides_ += 2;
-        dissipatedEnergy_ += batch.dissipated(l);
-        elasticEnergy_ += batch.elastic(l);
-        bodies_.torque(i) += batch.torqueA(l);
-        bodies_.torque(j) -= batch.minusTorqueB(l);
-        const vector F = batch.F(l);
-        bodies_.force(i) += F;
-        bodies_.force(j) -= F;
-    };
-
-    auto sphereEffect = [&](const label i, const label k, const label l)
-    {
-        if (!spheres.contact(l))
-        {
-            histories_.setTouching(k, false);
-        }
-        else if (scalarKick(i, k, spheres, l, spheres.overlap(l)))
-        {
-            realRealPair(i, k);
-        }
-        else
-        {
-            kickEffect(i, k, spheres, l);
-        }
-    };
-
-    auto ellipsoidEffect = [&](const label i, const label k, const label l)
-    {
-        if (!ellipsoids.decided(l))
-        {
-            realRealPair(i, k);
-        }
-        else if (!ellipsoidKicks)
-        {
-            // listPairGeometry's effects, then the contact
-            const ellipsoidContact::result c = ellipsoids.contact(l);
-            keepLastingTrack(k, c.n);
-            realRealContact(i, k, c);
-        }
-        else if (scalarKick(i, k, ellipsoids, l, ellipsoids.overlap(l)))
-        {
-            realRealPair(i, k);
-        }
-        else
-        {
-            // listPairGeometry's effects, then the kick's
-            keepLastingTrack(k, ellipsoids.normal(l));
-            kickEffect(i, k, ellipsoids, l);
-        }
-    };
+    const bool kicked = batchLaws_.size() && !recordContacts_;
 
     auto takeEffect = [&]()
     {
@@ -1041,7 +1109,7 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
         if (nEllipsoidLanes > 0)
         {
             ellipsoids.evaluate(nEllipsoidLanes);
-            if (ellipsoidKicks)
+            if (kicked)
             {
                 ellipsoids.kick(nEllipsoidLanes, deltaT_);
             }
@@ -1051,9 +1119,15 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
             const waiting& w = queue[q];
             switch (w.by)
             {
-                case path::scalar: realRealPair(w.i, w.k); break;
-                case path::sphere: sphereEffect(w.i, w.k, w.lane); break;
-                case path::ellipsoid: ellipsoidEffect(w.i, w.k, w.lane); break;
+                case path::scalar:
+                    realRealPair(w.i, w.k);
+                    break;
+                case path::sphere:
+                    sphereLaneEffect(w.i, w.k, spheres, w.lane);
+                    break;
+                case path::ellipsoid:
+                    ellipsoidLaneEffect(w.i, w.k, ellipsoids, w.lane, kicked);
+                    break;
             }
         }
         nQueued = 0;
@@ -1070,13 +1144,13 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
             const label j = list_.partner(k);
             const contactBody& B = bodies_[j];
             const point& xB = bodies_.x(j);
-            const label pairi = A.material*nMaterials_ + B.material;
             if (pairApart(k, A, xA, B, xB))
             {
                 // Only the pair's own history changed: nothing to queue
                 continue;
             }
             waiting w{i, k, -1, path::scalar};
+            const label pairi = A.material*nMaterials_ + B.material;
             if (A.sphere && B.sphere)
             {
                 if (sphereLanes && !(pp_[pairi].muR > 0))
@@ -1095,39 +1169,11 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
             }
             else if
             (
-                // A lasting contact with a tracked direction and its
-                // extrapolation: what listPairGeometry starts from
-                ellipsoidLanes && histories_.touching(k)
-             && A.shell >= 0 && B.shell >= 0
-             && !(histories_.apartUntil(k) > 0)
-             && !(ellipsoidKicks && pp_[pairi].muR > 0)
+                ellipsoidLanes
+             && setEllipsoidLane(i, k, ellipsoids, nEllipsoidLanes, kicked)
             )
             {
-                const vector& n = histories_.direction(k);
-                const vector start = n + histories_.directionChange(k);
-                const ellipsoid& eA = bodies_.shell(A);
-                const ellipsoid& eB = bodies_.shell(B);
-                if
-                (
-                    magSqr(n) > 0 && magSqr(start) > 0
-                 && !(eA.isSphere() && eB.isSphere())
-                )
-                {
-                    ellipsoids.setLane(nEllipsoidLanes, eA, eB, start);
-                    if (ellipsoidKicks)
-                    {
-                        ellipsoids.setBodies
-                        (
-                            nEllipsoidLanes,
-                            xA, A.U, A.omega, A.mass,
-                            bodies_.inverseInertiaOf(A),
-                            xB, B.U, B.omega, B.mass,
-                            bodies_.inverseInertiaOf(B),
-                            batchLaws_[pairi], histories_.xi(k)
-                        );
-                    }
-                    w = {i, k, nEllipsoidLanes++, path::ellipsoid};
-                }
+                w = {i, k, nEllipsoidLanes++, path::ellipsoid};
             }
             queue[nQueued++] = w;
             if
