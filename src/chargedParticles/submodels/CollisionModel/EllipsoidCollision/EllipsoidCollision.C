@@ -1020,8 +1020,12 @@ inline void Foam::EllipsoidCollision<CloudType>::ellipsoidLaneEffect
 template<class CloudType>
 inline bool Foam::EllipsoidCollision<CloudType>::setEllipsoidLane
 (
-    const label i,
     const label k,
+    const contactBody& A,
+    const point& xA,
+    const contactBody& B,
+    const point& xB,
+    const label pairi,
     ellipsoidContactBatch& batch,
     const label l,
     const bool kicked
@@ -1029,9 +1033,6 @@ inline bool Foam::EllipsoidCollision<CloudType>::setEllipsoidLane
 {
     // A lasting contact with a tracked direction and its extrapolation:
     // what listPairGeometry starts from
-    const contactBody& A = bodies_[i];
-    const contactBody& B = bodies_[list_.partner(k)];
-    const label pairi = A.material*nMaterials_ + B.material;
     if
     (
         !histories_.touching(k) || A.shell < 0 || B.shell < 0
@@ -1058,9 +1059,8 @@ inline bool Foam::EllipsoidCollision<CloudType>::setEllipsoidLane
         batch.setBodies
         (
             l,
-            bodies_.x(i), A.U, A.omega, A.mass, bodies_.inverseInertiaOf(A),
-            bodies_.x(list_.partner(k)), B.U, B.omega, B.mass,
-            bodies_.inverseInertiaOf(B),
+            xA, A.U, A.omega, A.mass, bodies_.inverseInertiaOf(A),
+            xB, B.U, B.omega, B.mass, bodies_.inverseInertiaOf(B),
             batchLaws_[pairi], histories_.xi(k)
         );
     }
@@ -1170,7 +1170,10 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
             else if
             (
                 ellipsoidLanes
-             && setEllipsoidLane(i, k, ellipsoids, nEllipsoidLanes, kicked)
+             && setEllipsoidLane
+                (
+                    k, A, xA, B, xB, pairi, ellipsoids, nEllipsoidLanes, kicked
+                )
             )
             {
                 w = {i, k, nEllipsoidLanes++, path::ellipsoid};
