@@ -97,6 +97,77 @@ bool onsetCorrected
 }
 
 
+// EllipsoidCollision::pairForce of two real bodies A and B in contact c,
+// the batches' reference: the law's kick with the normal mobilities
+// 1/m + (r x n).I^-1 (r x n) (invI zero for a sphere), the torques on A and
+// (minus) on B about their centres with the forces and torques of
+// -dU/dR gradR, whether the onset correction applies (the batches leave
+// that kick to the scalar path) and whether the contact slips
+struct pairKick
+{
+    bool corrected;
+    bool slipping;
+    vector F, torqueA, minusTorqueB, xi;
+    contactWork work;
+};
+
+pairKick pairForceReference
+(
+    const contactLaw& law,
+    const contactProperties& p,
+    const ellipsoidContact::result& c,
+    const point& xA, const vector& UA, const vector& omegaA,
+    const scalar mA, const symmTensor& invIA,
+    const point& xB, const vector& UB, const vector& omegaB,
+    const scalar mB, const symmTensor& invIB,
+    const vector& xi,
+    const scalar dt
+)
+{
+    const point xc = 0.5*(c.x1 + c.x2);
+    const vector vRel =
+        (UA + (omegaA ^ (xc - xA))) - (UB + (omegaB ^ (xc - xB)));
+    const scalar mStar = mA*mB/(mA + mB);
+    const vector rnA = (xc - xA) ^ c.n;
+    const vector rnB = (xc - xB) ^ c.n;
+    const scalar invMassNormal =
+        (1/mA + (rnA & (invIA & rnA))) + (1/mB + (rnB & (invIB & rnB)));
+
+    pairKick k;
+    k.corrected = onsetCorrected(p, c, vRel, mStar, invMassNormal, dt);
+    k.xi = xi;
+    k.work = {0, 0};
+    scalar dUdR;
+    const vector F = law.force
+    (
+        p, c, vRel, mStar, invMassNormal, dt, k.xi, dUdR, k.work
+    );
+    const scalar Fn = -(F & c.n);
+    k.slipping = mag(F + Fn*c.n) >= (1 - 1e-9)*p.mu*Fn;
+    k.F = F - dUdR*c.gradR.centre1;
+    k.torqueA = (((xc - xA) ^ F) + vector(Zero)) - dUdR*c.gradR.rotation1;
+    k.minusTorqueB =
+        (((xc - xB) ^ F) + vector(Zero)) + dUdR*c.gradR.rotation2;
+    return k;
+}
+
+
+// Does lane l's kick differ from the reference k?
+bool kickDiffers
+(
+    const contactBatchKicks& batch,
+    const label l,
+    const pairKick& k
+)
+{
+    return
+        batch.F(l) != k.F || batch.torqueA(l) != k.torqueA
+     || batch.minusTorqueB(l) != k.minusTorqueB || batch.xi(l) != k.xi
+     || batch.dissipated(l) != k.work.dissipated
+     || batch.elastic(l) != k.work.elastic;
+}
+
+
 // A normal contact of overlap delta against a wall along +x
 ellipsoidContact::result normalContact(const scalar delta, const scalar R)
 {
@@ -376,10 +447,10 @@ TEST(sphereContactBatch, isTheScalarPathBitForBit)
         law.properties(5e6, 0.3, 5e6, 0.3, dictionary(), 0.5, 0.3, 0),
         law.properties(7e7, 0.25, 5e6, 0.3, dictionary(), 0.8, 0.1, 0)
     };
-    const sphereContactBatch::lawConstants constants[2] =
+    const defaultLawConstants constants[2] =
     {
-        sphereContactBatch::lawConstants::of(props[0]),
-        sphereContactBatch::lawConstants::of(props[1])
+        defaultLawConstants::of(props[0]),
+        defaultLawConstants::of(props[1])
     };
     const scalar dt = 5e-6;
     Random rnd(17);
@@ -449,47 +520,22 @@ TEST(sphereContactBatch, isTheScalarPathBitForBit)
             nDiffer += !batch.contact(l);
             nDiffer += batch.overlap(l) != c.overlap;
 
-            const point xc = 0.5*(c.x1 + c.x2);
-            const vector vRel =
-                (x.UA + (x.omegaA ^ (xc - x.xA)))
-              - (x.UB + (x.omegaB ^ (xc - x.xB)));
-            const scalar mStar = x.mA*x.mB/(x.mA + x.mB);
-            const scalar invMassNormal = 1/x.mA + 1/x.mB;
-            const contactProperties& p = props[x.material];
-            const bool corrected =
-                onsetCorrected(p, c, vRel, mStar, invMassNormal, dt);
+            const pairKick k = pairForceReference
+            (
+                law, props[x.material], c,
+                x.xA, x.UA, x.omegaA, x.mA, symmTensor::zero,
+                x.xB, x.UB, x.omegaB, x.mB, symmTensor::zero,
+                x.xi, dt
+            );
             if (batch.needsScalar(l))
             {
                 ++nScalar;
-                nWrongScalar += !corrected;
+                nWrongScalar += !k.corrected;
                 continue;
             }
-            nWrongScalar += corrected;
-
-            vector xi = x.xi;
-            scalar dUdR;
-            contactWork work{0, 0};
-            const vector F = law.force
-            (
-                p, c, vRel, mStar, invMassNormal, dt, xi, dUdR, work
-            );
-            const vector MA = ((xc - x.xA) ^ F) + vector(Zero);
-            const vector MB = ((xc - x.xB) ^ F) + vector(Zero);
-            const scalar Fn = -(F & c.n);
-            if (mag(F + Fn*c.n) >= (1 - 1e-9)*p.mu*Fn)
-            {
-                ++nSlip;
-            }
-            if
-            (
-                batch.F(l) != F || batch.torqueA(l) != MA
-             || batch.minusTorqueB(l) != MB || batch.xi(l) != xi
-             || batch.dissipated(l) != work.dissipated
-             || batch.elastic(l) != work.elastic
-            )
-            {
-                ++nDiffer;
-            }
+            nWrongScalar += k.corrected;
+            nSlip += k.slipping;
+            nDiffer += kickDiffers(batch, l, k);
         }
     }
     report("sphere batch: lanes in contact", nContact);
@@ -651,49 +697,22 @@ TEST(ellipsoidContactBatch, kickIsTheScalarPathBitForBit)
              || batch.normal(l) != c.n || batch.overlap(l) != c.overlap;
             nNonZeroGradR += mag(c.gradR.rotation1) > 0;
 
-            // EllipsoidCollision::pairForce of two real ellipsoids
-            const point& xA = x.e1.centre();
-            const point& xB = x.e2.centre();
-            const point xc = 0.5*(c.x1 + c.x2);
-            const vector vRel =
-                (x.UA + (x.omegaA ^ (xc - xA)))
-              - (x.UB + (x.omegaB ^ (xc - xB)));
-            const scalar mStar = x.mA*x.mB/(x.mA + x.mB);
-            const vector rnA = (xc - xA) ^ c.n;
-            const vector rnB = (xc - xB) ^ c.n;
-            const scalar invMassNormal =
-                (1/x.mA + (rnA & (x.invIA & rnA)))
-              + (1/x.mB + (rnB & (x.invIB & rnB)));
-
-            const contactProperties& p = props[x.material];
-            const bool corrected =
-                onsetCorrected(p, c, vRel, mStar, invMassNormal, dt);
+            const pairKick k = pairForceReference
+            (
+                law, props[x.material], c,
+                x.e1.centre(), x.UA, x.omegaA, x.mA, x.invIA,
+                x.e2.centre(), x.UB, x.omegaB, x.mB, x.invIB,
+                x.xi, dt
+            );
             if (batch.needsScalar(l))
             {
                 ++nScalar;
-                nWrongScalar += !corrected;
+                nWrongScalar += !k.corrected;
                 continue;
             }
-            nWrongScalar += corrected;
-
-            vector xi = x.xi;
-            scalar dUdR;
-            contactWork work{0, 0};
-            const vector F = law.force
-            (
-                p, c, vRel, mStar, invMassNormal, dt, xi, dUdR, work
-            );
-            const vector MA = ((xc - xA) ^ F) + vector(Zero);
-            const vector MB = ((xc - xB) ^ F) + vector(Zero);
-            const scalar Fn = -(F & c.n);
-            nSlip += mag(F + Fn*c.n) >= (1 - 1e-9)*p.mu*Fn;
-            nDiffer +=
-                batch.F(l) != F - dUdR*c.gradR.centre1
-             || batch.torqueA(l) != MA - dUdR*c.gradR.rotation1
-             || batch.minusTorqueB(l) != MB + dUdR*c.gradR.rotation2
-             || batch.xi(l) != xi
-             || batch.dissipated(l) != work.dissipated
-             || batch.elastic(l) != work.elastic;
+            nWrongScalar += k.corrected;
+            nSlip += k.slipping;
+            nDiffer += kickDiffers(batch, l, k);
         }
     }
     report("ellipsoid batch: lanes", nLanes);

@@ -81,7 +81,8 @@ inline lanes3 curvatureTerm
     return dot(M, t)*hInv - w*(dot(w, t)*hInv3);
 }
 
-// curvatureAlong: K and the tangential part of its gradient
+// curvatureAlong: the mean curvature K (Ruan Eq. 37) as a function of n,
+// K(n) = h(n) (tr S - n.S n)/2, and the tangential part of its gradient
 inline void curvatureAlong
 (
     const lanesSymm& S,
@@ -400,8 +401,7 @@ void Foam::ellipsoidContactBatch::kick(const label nLanes, const scalar dt)
 {
     padKick(nLanes);
 
-    const lanes zero = broadcast(0), one = broadcast(1);
-    const lanes half = broadcast(0.5);
+    const lanes one = broadcast(1);
     const lanes3 xA = load3(xA_), xB = load3(xB_);
     const lanes3 n = load3(n_);
 
@@ -418,14 +418,14 @@ void Foam::ellipsoidContactBatch::kick(const label nLanes, const scalar dt)
     // EllipsoidCollision::pairForce: the contact point, the relative
     // velocity there, the reduced mass and the normal mobilities
     // (ContactBodies::normalMobility: 1/m + (r x n).I^-1 (r x n))
-    const lanes3 xc = half*(load3(x1_) + load3(x2_));
-    const lanes3 vRel =
-        (load3(UA_) + cross(load3(omegaA_), xc - xA))
-      - (load3(UB_) + cross(load3(omegaB_), xc - xB));
     const lanes mA = load(mA_), mB = load(mB_);
-    const lanes mStar = mA*mB/(mA + mB);
-    const lanes3 rnA = cross(xc - xA, n);
-    const lanes3 rnB = cross(xc - xB, n);
+    const pairMotion p = pairMotionOf
+    (
+        load3(x1_), load3(x2_), xA, load3(UA_), load3(omegaA_), mA,
+        xB, load3(UB_), load3(omegaB_), mB
+    );
+    const lanes3 rnA = cross(p.xc - xA, n);
+    const lanes3 rnB = cross(p.xc - xB, n);
     const lanes invMassNormal =
         (one/mA + dot(rnA, dot(loadSymm(invIA_), rnA)))
       + (one/mB + dot(rnB, dot(loadSymm(invIB_), rnB)));
@@ -435,18 +435,20 @@ void Foam::ellipsoidContactBatch::kick(const label nLanes, const scalar dt)
     const kickLanes k =
         defaultLawKick
         (
-            law_, n, overlap, R, vRel, mStar, invMassNormal, broadcast(dt),
-            xi
+            law_, n, overlap, R, p.vRel, p.mStar, invMassNormal,
+            broadcast(dt), xi
         );
 
-    // Torques about the centres (Ruan Eq. 40; the zero added is the
-    // rolling torque Mr = 0, as in pairForce), and the elastic force and
-    // torques of the change of R: -dUdR gradR
-    const lanes3 none{zero, zero, zero};
-    const lanes3 MA = cross(xc - xA, k.F) + none;
-    const lanes3 MB = cross(xc - xB, k.F) + none;
-    store3(torqueA_, MA - k.dUdR*load3(gradRr1_));
-    store3(torqueB_, MB + k.dUdR*load3(gradRr2_));
+    // Torques about the centres, and the elastic force and torques of the
+    // change of R: -dUdR gradR (ellipsoidContact.H)
+    store3
+    (
+        torqueA_, torqueAbout(p.xc, xA, k.F) - k.dUdR*load3(gradRr1_)
+    );
+    store3
+    (
+        torqueB_, torqueAbout(p.xc, xB, k.F) + k.dUdR*load3(gradRr2_)
+    );
     store3(F_, k.F - k.dUdR*load3(gradRc1_));
     store3(xi_, xi);
     store(dissipated_, k.dissipated);

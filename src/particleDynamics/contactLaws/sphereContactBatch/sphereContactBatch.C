@@ -68,13 +68,12 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
 
     // EllipsoidCollision::pairForce: the contact point, the relative
     // velocity there, the reduced mass and the normal mobility of spheres
-    const lanes half = broadcast(0.5);
-    const lanes3 xc = half*(x1 + x2);
-    const lanes3 vRel =
-        (load3(UA_) + cross(load3(omegaA_), xc - xA))
-      - (load3(UB_) + cross(load3(omegaB_), xc - xB));
     const lanes mA = load(mA_), mB = load(mB_);
-    const lanes mStar = mA*mB/(mA + mB);
+    const pairMotion p = pairMotionOf
+    (
+        x1, x2, xA, load3(UA_), load3(omegaA_), mA,
+        xB, load3(UB_), load3(omegaB_), mB
+    );
     const lanes invMassNormal = one/mA + one/mB;
 
     // contactLaw::force with the default parts
@@ -82,16 +81,14 @@ void Foam::sphereContactBatch::evaluate(const label nLanes, const scalar dt)
     const kickLanes k =
         defaultLawKick
         (
-            law_, n, delta, R, vRel, mStar, invMassNormal, broadcast(dt), xi
+            law_, n, delta, R, p.vRel, p.mStar, invMassNormal, broadcast(dt),
+            xi
         );
 
-    // Torques about the centres (Ruan Eq. 40), no rolling resistance; the
-    // zero added is pairForce's rolling torque Mr = 0 (it turns a -0 into
-    // +0, as there)
-    const lanes3 none{zero, zero, zero};
+    // Torques about the centres, no rolling resistance
     store3(F_, k.F);
-    store3(torqueA_, cross(xc - xA, k.F) + none);
-    store3(torqueB_, cross(xc - xB, k.F) + none);
+    store3(torqueA_, torqueAbout(p.xc, xA, k.F));
+    store3(torqueB_, torqueAbout(p.xc, xB, k.F));
     store3(xi_, xi);
     store(overlap_, overlap);
     store(dissipated_, k.dissipated);

@@ -113,8 +113,7 @@ void Foam::EllipsoidCollision<CloudType>::makeLaws(const dictionary& coeffs)
         batchLaws_.setSize(pp_.size());
         forAll(pp_, pairi)
         {
-            batchLaws_[pairi] =
-                sphereContactBatch::lawConstants::of(pp_[pairi]);
+            batchLaws_[pairi] = defaultLawConstants::of(pp_[pairi]);
         }
     }
 
@@ -653,7 +652,13 @@ Foam::EllipsoidCollision<CloudType>::listPairGeometry
     const vector before = n;
     n += histories_.directionChange(k);
     const ellipsoidContact::result c = pairGeometry(A, xA, B, xB, false, n);
-    keepTrack(k, before, c, A, B);
+    keepTrack
+    (
+        k, before,
+        histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
+     && magSqr(before) > 0 && magSqr(n) > 0,
+        c.separation, A, B
+    );
     return c;
 }
 
@@ -663,40 +668,22 @@ inline void Foam::EllipsoidCollision<CloudType>::keepTrack
 (
     const label k,
     const vector& before,
-    const ellipsoidContact::result& c,
+    const bool lasting,
+    const scalar separation,
     const contactBody& A,
     const contactBody& B
 )
 {
     const vector& n = histories_.direction(k);
-    const bool lasting =
-        histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
-     && magSqr(before) > 0 && magSqr(n) > 0;
     histories_.directionChange(k) = lasting ? n - before : vector(Zero);
 
     // Separated along n: so while the bodies travel less than the gap
     // (ContactBodies sums the travel of the bodies with a shell: a pair
     // with a sphere keeps no gap)
     histories_.apartUntil(k) =
-        c.separation > 0 && A.shell >= 0 && B.shell >= 0
-      ? bodies_.travel(A) + bodies_.travel(B) + c.separation
+        separation > 0 && A.shell >= 0 && B.shell >= 0
+      ? bodies_.travel(A) + bodies_.travel(B) + separation
       : 0;
-}
-
-
-template<class CloudType>
-inline void Foam::EllipsoidCollision<CloudType>::keepLastingTrack
-(
-    const label k,
-    const vector& n
-)
-{
-    // keepTrack of a lasting contact (touching, converged, a non-zero
-    // direction before and after): no separation
-    vector& direction = histories_.direction(k);
-    histories_.directionChange(k) = n - direction;
-    direction = n;
-    histories_.apartUntil(k) = 0;
 }
 
 
@@ -997,22 +984,27 @@ inline void Foam::EllipsoidCollision<CloudType>::ellipsoidLaneEffect
     {
         realRealPair(i, k);
     }
-    else if (!kicked)
-    {
-        // listPairGeometry's effects, then the contact
-        const ellipsoidContact::result c = batch.contact(l);
-        keepLastingTrack(k, c.n);
-        realRealContact(i, k, c);
-    }
-    else if (laneToScalarPath(i, k, batch, l, batch.overlap(l)))
+    else if (kicked && laneToScalarPath(i, k, batch, l, batch.overlap(l)))
     {
         realRealPair(i, k);
     }
     else
     {
-        // listPairGeometry's effects, then the kick's
-        keepLastingTrack(k, batch.normal(l));
-        laneKickEffect(i, k, batch, l);
+        // listPairGeometry's effects (a lasting contact: no gap), then the
+        // kick's or the contact pair by pair
+        vector& n = histories_.direction(k);
+        const vector before = n;
+        n = batch.normal(l);
+        const label j = list_.partner(k);
+        keepTrack(k, before, true, 0, bodies_[i], bodies_[j]);
+        if (kicked)
+        {
+            laneKickEffect(i, k, batch, l);
+        }
+        else
+        {
+            realRealContact(i, k, batch.contact(l));
+        }
     }
 }
 
@@ -1097,8 +1089,7 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
     ellipsoidContactBatch ellipsoids;
 
     // The ellipsoid lanes also take the kick where the sphere lanes may
-    // (the default law's parts, no listing of the contacts)
-    const bool kicked = batchLaws_.size() && !recordContacts_;
+    const bool kicked = lanesKick();
 
     auto takeEffect = [&]()
     {
@@ -1202,8 +1193,7 @@ void Foam::EllipsoidCollision<CloudType>::realRealInteraction()
     // ellipsoid batch the narrow phase of the default method, for beds
     // with ellipsoids
     const bool sphereLanes =
-        batchLaws_.size() && !recordContacts_
-     && bodies_.nShells() < bodies_.size();
+        lanesKick() && bodies_.nShells() < bodies_.size();
     const bool ellipsoidLanes =
         method_ == ellipsoidContact::method::automatic
      && bodies_.nShells() > 0;
