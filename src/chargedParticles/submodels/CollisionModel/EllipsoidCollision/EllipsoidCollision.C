@@ -637,27 +637,28 @@ template<class CloudType>
 Foam::ellipsoidContact::result
 Foam::EllipsoidCollision<CloudType>::listPairGeometry
 (
-    const label k,
-    const contactBody& A,
-    const point& xA,
-    const contactBody& B,
-    const point& xB
+    const label i,
+    const label k
 )
 {
     // A lasting contact's normal turns smoothly: started from its linear
     // extrapolation, Newton is within the square of the step's turn of the
     // normal, and converges in one step instead of two (the start changes
     // the converged normal only at round-off, ellipsoidContact.H)
+    const label j = list_.partner(k);
     vector& n = histories_.direction(k);
     const vector before = n;
     n += histories_.directionChange(k);
-    const ellipsoidContact::result c = pairGeometry(A, xA, B, xB, false, n);
+    const ellipsoidContact::result c = pairGeometry
+    (
+        bodies_[i], bodies_.x(i), bodies_[j], bodies_.x(j), false, n
+    );
     keepTrack
     (
         k, before,
         histories_.touching(k) && c.contact && c.overlap > 0 && c.converged
      && magSqr(before) > 0 && magSqr(n) > 0,
-        c.separation, A, B
+        c.separation, i, j
     );
     return c;
 }
@@ -670,8 +671,8 @@ inline void Foam::EllipsoidCollision<CloudType>::keepTrack
     const vector& before,
     const bool lasting,
     const scalar separation,
-    const contactBody& A,
-    const contactBody& B
+    const label i,
+    const label j
 )
 {
     const vector& n = histories_.direction(k);
@@ -681,8 +682,8 @@ inline void Foam::EllipsoidCollision<CloudType>::keepTrack
     // (ContactBodies sums the travel of the bodies with a shell: a pair
     // with a sphere keeps no gap)
     histories_.apartUntil(k) =
-        separation > 0 && A.shell >= 0 && B.shell >= 0
-      ? bodies_.travel(A) + bodies_.travel(B) + separation
+        separation > 0 && bodies_[i].shell >= 0 && bodies_[j].shell >= 0
+      ? bodies_.travel(i) + bodies_.travel(j) + separation
       : 0;
 }
 
@@ -789,20 +790,71 @@ Foam::vector Foam::EllipsoidCollision<CloudType>::pairForce
 
 
 template<class CloudType>
-inline bool Foam::EllipsoidCollision<CloudType>::pairApart
+inline bool Foam::EllipsoidCollision<CloudType>::stillSeparated
 (
     const label k,
-    const contactBody& A,
-    const point& xA,
-    const contactBody& B,
-    const point& xB
+    const scalar travelled
 )
 {
+    // Still separated along the tracked direction (the bodies travelled
+    // less than its gap since): what the narrow phase's first evaluation
+    // there would decide, with the same normalisation of the direction, so
+    // the run is bit-identical
+    const scalar apartUntil = histories_.apartUntil(k);
+    if (apartUntil > 0 && travelled < apartUntil)
+    {
+        vector& n = histories_.direction(k);
+        n = n*(1/mag(n));
+        return true;
+    }
+    return false;
+}
+
+
+template<class CloudType>
+inline bool Foam::EllipsoidCollision<CloudType>::pairApart
+(
+    const label i,
+    const label k
+)
+{
+    // The travel of both bodies since the list's build, with a factor for
+    // the round-off of its sums (relative eps per step since the build)
+    const label j = list_.partner(k);
+    auto travelled = [&]()
+    {
+        return (bodies_.travel(i) + bodies_.travel(j))*(1 + 1e-8);
+    };
+
+    // Bounding spheres still apart, or still overlapping, as at the
+    // pair's last check (the bodies travelled less than the margin found
+    // then): decided without the partner's record. Apart, its history is
+    // already what the check below leaves
+    const scalar reachUntil =
+        bodies_.nShells() > 0 ? histories_.reachUntil(k) : 0;
+    if (reachUntil != 0)
+    {
+        const scalar t = travelled();
+        if (t < mag(reachUntil))
+        {
+            return reachUntil > 0 || stillSeparated(k, t);
+        }
+    }
+
     // Bounding spheres of the collision shells. Apart, the pair's tracked
     // direction is forgotten: it then depends only on the pair's own
     // history since it came within reach, not on when the list was built
+    const contactBody& A = bodies_[i];
+    const contactBody& B = bodies_[j];
     const bool spheres = A.sphere && B.sphere;
-    if (magSqr(xA - xB) > sqr(A.radius + B.radius))
+    const scalar reach = A.radius + B.radius;
+    const scalar distanceSqr = magSqr(bodies_.x(i) - bodies_.x(j));
+    const bool outOfReach = distanceSqr > sqr(reach);
+    if (A.shell >= 0 && B.shell >= 0)
+    {
+        keepReach(k, i, j, outOfReach, distanceSqr, reach);
+    }
+    if (outOfReach)
     {
         histories_.setTouching(k, false);
         if (!spheres)
@@ -813,28 +865,32 @@ inline bool Foam::EllipsoidCollision<CloudType>::pairApart
         }
         return true;
     }
+    return !spheres && stillSeparated(k, travelled());
+}
 
-    // Still separated along the tracked direction (the bodies travelled
-    // less than its gap since): what the narrow phase's first evaluation
-    // there would decide, with the same normalisation of the direction, so
-    // the run is bit-identical. The factor covers the round-off of the
-    // travel sums (relative eps per step since the list's build)
-    if (!spheres)
-    {
-        const scalar apartUntil = histories_.apartUntil(k);
-        if
-        (
-            apartUntil > 0
-         && (bodies_.travel(A) + bodies_.travel(B))*(1 + 1e-8)
-          < apartUntil
-        )
-        {
-            vector& n = histories_.direction(k);
-            n = n*(1/mag(n));
-            return true;
-        }
-    }
-    return false;
+
+template<class CloudType>
+inline void Foam::EllipsoidCollision<CloudType>::keepReach
+(
+    const label k,
+    const label i,
+    const label j,
+    const bool outOfReach,
+    const scalar distanceSqr,
+    const scalar reach
+)
+{
+    // The centres' distance changes by at most the travel of the bodies
+    // (ContactBodies sums |dc| of each gather): the spheres stay as they
+    // are while the travel grows by less than the distance's margin to
+    // the reach. The margin leaves 1e-10 of the reach for the round-off
+    // of the distance and of the check's squares
+    const scalar distance = Foam::sqrt(distanceSqr);
+    const scalar margin =
+        (outOfReach ? distance - reach : reach - distance) - 1e-10*reach;
+    const scalar until = bodies_.travel(i) + bodies_.travel(j) + margin;
+    histories_.reachUntil(k) =
+        margin > 0 ? (outOfReach ? until : -until) : 0;
 }
 
 
@@ -845,16 +901,15 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
     const label k
 )
 {
+    if (pairApart(i, k))
+    {
+        return;
+    }
     const contactBody& A = bodies_[i];
     const point& xA = bodies_.x(i);
     const label j = list_.partner(k);
     const contactBody& B = bodies_[j];
     const point& xB = bodies_.x(j);
-
-    if (pairApart(k, A, xA, B, xB))
-    {
-        return;
-    }
 
     // Two spheres: the analytic contact (pairGeometry's for them, which
     // spheres do not track a direction for)
@@ -863,7 +918,7 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
         i, k,
         A.sphere && B.sphere
       ? ellipsoidContact::sphereSphere(xA, A.radius, xB, B.radius)
-      : listPairGeometry(k, A, xA, B, xB)
+      : listPairGeometry(i, k)
     );
 }
 
@@ -996,7 +1051,7 @@ inline void Foam::EllipsoidCollision<CloudType>::ellipsoidLaneEffect
         const vector before = n;
         n = batch.normal(l);
         const label j = list_.partner(k);
-        keepTrack(k, before, true, 0, bodies_[i], bodies_[j]);
+        keepTrack(k, before, true, 0, i, j);
         if (kicked)
         {
             laneKickEffect(i, k, batch, l);
@@ -1132,14 +1187,14 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
         const point& xA = bodies_.x(i);
         for (label k = list_.begin(i); k < list_.end(i); ++k)
         {
-            const label j = list_.partner(k);
-            const contactBody& B = bodies_[j];
-            const point& xB = bodies_.x(j);
-            if (pairApart(k, A, xA, B, xB))
+            if (pairApart(i, k))
             {
                 // Only the pair's own history changed: nothing to queue
                 continue;
             }
+            const label j = list_.partner(k);
+            const contactBody& B = bodies_[j];
+            const point& xB = bodies_.x(j);
             waiting w{i, k, -1, path::scalar};
             const label pairi = A.material*nMaterials_ + B.material;
             if (A.sphere && B.sphere)
