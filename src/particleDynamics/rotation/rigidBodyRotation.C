@@ -15,6 +15,43 @@ constexpr Foam::scalar Foam::rigidBodyRotation::sphereTolerance;
 constexpr Foam::scalar Foam::rigidBodyRotation::unitTolerance;
 
 
+namespace Foam
+{
+namespace
+{
+
+// cos x and sin(x)/x of the half angle x of a rotation, from x^2. Where
+// x < 1e-3 (every body of a settled bed: |omega| dt ~ 1e-4) by their
+// series, whose first omitted terms, x^6/720 and x^6/5040, are below
+// round-off: the same rotation without libm's sin and cos (measured on the
+// settling beds, whose bodies rotate every step)
+inline void cosAndSinc(const scalar x2, scalar& c, scalar& sinc)
+{
+    if (x2 < 1e-6)
+    {
+        c = 1 - 0.5*x2*(1 - x2/12);
+        sinc = 1 - x2/6*(1 - x2/20);
+    }
+    else
+    {
+        const scalar x = std::sqrt(x2);
+        c = std::cos(x);
+        sinc = std::sin(x)/x;
+    }
+}
+
+// A product of unit quaternions, normalised against round-off: |q|^2 =
+// 1 + e with e ~ 1e-16, and (3 - |q|^2)/2 is 1/|q| to O(e^2) (a Newton
+// step for 1/sqrt)
+inline void renormalise(quaternion& q)
+{
+    q *= 0.5*(3 - magSqr(q));
+}
+
+} // End anonymous namespace
+} // End namespace Foam
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::rigidBodyRotation::stopMoments
@@ -71,8 +108,9 @@ void Foam::rigidBodyRotation::axisRotation
     // about its axis i at the constant rate Lp_i/I_i and the sub-step is
     // an exact rotation by alpha
     const scalar alpha = Lp[i]/I[i]*h;
-    const scalar c = std::cos(0.5*alpha);
-    const scalar s = std::sin(0.5*alpha);
+    scalar c, sinc;
+    cosAndSinc(sqr(0.5*alpha), c, sinc);
+    const scalar s = 0.5*alpha*sinc;
 
     // Body-frame rotation composes on the right (Ruan Eq. 18:
     // dq/dt = q*(0, Omega_p)/2)
@@ -301,9 +339,11 @@ void Foam::rigidBodyRotation::freeRotation
         sphereRotation(q, Lin, Iperp, dt);
         const scalar Lpk = (Lin & q.R())[axis];
         const scalar halfAngle = 0.5*Lpk*(1/I[axis] - 1/Iperp)*dt;
+        scalar c, sinc;
+        cosAndSinc(sqr(halfAngle), c, sinc);
         vector e(Zero);
-        e[axis] = std::sin(halfAngle);
-        q = q*quaternion(std::cos(halfAngle), e);
+        e[axis] = halfAngle*sinc;
+        q = q*quaternion(c, e);
     }
     else
     {
@@ -323,7 +363,7 @@ void Foam::rigidBodyRotation::freeRotation
     }
 
     // Round-off control only: every sub-step is a unit quaternion product
-    q.normalize();
+    renormalise(q);
 }
 
 
@@ -354,28 +394,11 @@ void Foam::rigidBodyRotation::sphereRotation
     {
         return;
     }
-    // Where x < 1e-3 (every sphere of a settled bed: |omega| dt ~ 1e-4)
-    // cos and sin(x)/x by their series, whose first omitted terms,
-    // x^6/720 and x^6/5040, are below round-off: the same rotation
-    // without sincos and the square root of |L| (measured on the
-    // settling bed's spheres, which rotate every step)
+    // (from x^2: no square root of |L| where x is small)
     scalar c, sinc;
-    if (x2 < 1e-6)
-    {
-        c = 1 - 0.5*x2*(1 - x2/12);
-        sinc = 1 - x2/6*(1 - x2/20);
-    }
-    else
-    {
-        const scalar x = std::sqrt(x2);
-        c = std::cos(x);
-        sinc = std::sin(x)/x;
-    }
+    cosAndSinc(x2, c, sinc);
     q = quaternion(c, (sinc*h)*Lin)*q;
-
-    // Normalised against round-off: |q|^2 = 1 + e with e ~ 1e-16, and
-    // (3 - |q|^2)/2 is 1/|q| to O(e^2) (a Newton step for 1/sqrt)
-    q *= 0.5*(3 - magSqr(q));
+    renormalise(q);
 }
 
 
