@@ -148,13 +148,24 @@ Foam::ellipsoid::ellipsoid(const scalar radius, const point& centre)
 
 Foam::tensor Foam::ellipsoid::rotation(const quaternion& q)
 {
-    const scalar m = Foam::sqrt(sqr(q.w()) + magSqr(q.v()));
-    if (!(m > 0) || !std::isfinite(m))
+    const scalar m2 = sqr(q.w()) + magSqr(q.v());
+    if (!(m2 > 0) || !std::isfinite(m2))
     {
         FatalErrorInFunction
             << "Ellipsoid orientation quaternion " << q
             << " is zero or not finite" << exit(FatalError);
     }
+
+    // Within 1e-8 of a unit quaternion (a parcel's, renormalised by every
+    // rotation step): 1/|q| by a Newton step for 1/sqrt, whose error
+    // 3/8 (|q|^2 - 1)^2 is below round-off, without the square root and
+    // the divisions (a shell per parcel and step); any other by |q|
+    if (mag(m2 - 1) < 1e-8)
+    {
+        const scalar s = 0.5*(3 - m2);
+        return quaternion(s*q.w(), s*q.v()).R();
+    }
+    const scalar m = Foam::sqrt(m2);
     return quaternion(q.w()/m, q.v()/m).R();
 }
 

@@ -1553,6 +1553,53 @@ int main(int argc, char** argv)
 // ************************************************************************* //
 
 
+TEST(ellipsoid, RotationOfUnitAndDriftedQuaternions)
+{
+    // ellipsoid::rotation normalises its quaternion: by a Newton step
+    // within 1e-8 of unit length (a parcel's), else by |q|. Both against
+    // the rotation of the quaternion normalised in long double: a few
+    // ulps, on both sides of the threshold and far from it
+    rng_t g(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    scalar worst = 0;
+    for (const scalar drift : {0.0, 1e-16, 1e-12, 4.9e-9, 5.1e-9, 1e-6, 0.3, 7.0})
+    {
+        for (label i = 0; i < 1000; ++i)
+        {
+            const quaternion q(U(g), vector(U(g), U(g), U(g)));
+            const long double m = std::sqrt
+            (
+                (long double)q.w()*q.w() + (long double)q.v().x()*q.v().x()
+              + (long double)q.v().y()*q.v().y()
+              + (long double)q.v().z()*q.v().z()
+            );
+            if (m < 0.1)
+            {
+                continue;
+            }
+            // |q|^2 = 1 + drift to round-off
+            const long double s = std::sqrt(1 + (long double)drift)/m;
+            const quaternion qd
+            (
+                double(s*q.w()),
+                vector(double(s*q.v().x()), double(s*q.v().y()), double(s*q.v().z()))
+            );
+            const quaternion unit
+            (
+                double(q.w()/m),
+                vector(double(q.v().x()/m), double(q.v().y()/m), double(q.v().z()/m))
+            );
+            const tensor R = ellipsoid::rotation(qd);
+            worst = max(worst, cmptMax(cmptMag(R - unit.R())));
+            EXPECT_LT(cmptMax(cmptMag((R & R.T()) - tensor::I)), 2e-15);
+        }
+    }
+    std::cout << "[ measured ] ellipsoid::rotation of unit and drifted"
+        << " quaternions: largest difference " << worst << std::endl;
+    EXPECT_LT(worst, 2e-15);
+}
+
+
 TEST(ellipsoid, SurfaceAreaAgainstClosedFormsAndQuadrature)
 {
     const scalar pi = constant::mathematical::pi;
