@@ -40,6 +40,37 @@ inline void cosAndSinc(const scalar x2, scalar& c, scalar& sinc)
     }
 }
 
+// Axis k of the body in the inertial frame: column k of q.R()
+inline vector bodyAxis(const quaternion& q, const direction k)
+{
+    const scalar w = q.w();
+    const vector& v = q.v();
+    switch (k)
+    {
+        case 0:
+            return vector
+            (
+                sqr(w) + sqr(v.x()) - sqr(v.y()) - sqr(v.z()),
+                2*(v.x()*v.y() + w*v.z()),
+                2*(v.x()*v.z() - w*v.y())
+            );
+        case 1:
+            return vector
+            (
+                2*(v.x()*v.y() - w*v.z()),
+                sqr(w) - sqr(v.x()) + sqr(v.y()) - sqr(v.z()),
+                2*(v.y()*v.z() + w*v.x())
+            );
+        default:
+            return vector
+            (
+                2*(v.x()*v.z() + w*v.y()),
+                2*(v.y()*v.z() - w*v.x()),
+                sqr(w) - sqr(v.x()) - sqr(v.y()) + sqr(v.z())
+            );
+    }
+}
+
 // A product of unit quaternions, normalised against round-off: |q|^2 =
 // 1 + e with e ~ 1e-16, and (3 - |q|^2)/2 is 1/|q| to O(e^2) (a Newton
 // step for 1/sqrt)
@@ -334,16 +365,21 @@ void Foam::rigidBodyRotation::freeRotation
         // (on the left) and about the body axis k at
         // Lp_k (1/I_k - 1/I_perp) (on the right). Exact for any dt (the
         // regular precession of a symmetric top), two rotations where the
-        // splitting below takes five
+        // splitting below takes five. Lp_k from the start, the two
+        // rotations side by side (independent chains of operations)
         const scalar Iperp = 0.5*(I[(axis + 1) % 3] + I[(axis + 2) % 3]);
-        sphereRotation(q, Lin, Iperp, dt);
-        const scalar Lpk = (Lin & q.R())[axis];
+        const scalar Lpk = Lin & bodyAxis(q, axis);
         const scalar halfAngle = 0.5*Lpk*(1/I[axis] - 1/Iperp)*dt;
         scalar c, sinc;
         cosAndSinc(sqr(halfAngle), c, sinc);
         vector e(Zero);
         e[axis] = halfAngle*sinc;
-        q = q*quaternion(c, e);
+
+        // About L: sphereRotation's quaternion
+        const scalar h = 0.5*dt/Iperp;
+        scalar cL, sincL;
+        cosAndSinc(sqr(h)*magSqr(Lin), cL, sincL);
+        q = quaternion(cL, (sincL*h)*Lin)*q*quaternion(c, e);
     }
     else
     {
