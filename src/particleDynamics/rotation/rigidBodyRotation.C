@@ -430,7 +430,7 @@ void Foam::rigidBodyRotation::sphereRotation
     {
         return;
     }
-    // (from x^2: no square root of |L| where x is small)
+    // cosAndSinc takes x^2: no square root of |L| where x is small
     scalar c, sinc;
     cosAndSinc(x2, c, sinc);
     q = quaternion(c, (sinc*h)*Lin)*q;
