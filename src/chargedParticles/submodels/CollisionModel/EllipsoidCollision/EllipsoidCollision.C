@@ -901,10 +901,20 @@ inline void Foam::EllipsoidCollision<CloudType>::realRealPair
     const label k
 )
 {
-    if (pairApart(i, k))
+    if (!pairApart(i, k))
     {
-        return;
+        narrowPhasePair(i, k);
     }
+}
+
+
+template<class CloudType>
+void Foam::EllipsoidCollision<CloudType>::narrowPhasePair
+(
+    const label i,
+    const label k
+)
+{
     const contactBody& A = bodies_[i];
     const point& xA = bodies_.x(i);
     const label j = list_.partner(k);
@@ -1016,7 +1026,7 @@ inline void Foam::EllipsoidCollision<CloudType>::sphereLaneEffect
     }
     else if (laneToScalarPath(i, k, batch, l, batch.overlap(l)))
     {
-        realRealPair(i, k);
+        narrowPhasePair(i, k);
     }
     else
     {
@@ -1035,13 +1045,13 @@ inline void Foam::EllipsoidCollision<CloudType>::ellipsoidLaneEffect
     const bool kicked
 )
 {
-    if (!batch.decided(l))
+    if
+    (
+        !batch.decided(l)
+     || (kicked && laneToScalarPath(i, k, batch, l, batch.overlap(l)))
+    )
     {
-        realRealPair(i, k);
-    }
-    else if (kicked && laneToScalarPath(i, k, batch, l, batch.overlap(l)))
-    {
-        realRealPair(i, k);
+        narrowPhasePair(i, k);
     }
     else
     {
@@ -1128,9 +1138,11 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
     // it too), the others (new contacts of ellipsoids, rolling resistance)
     // to go one by one; at a full batch or queue the batches are evaluated
     // and the queue takes effect in order. A pair out of reach or certified
-    // apart changes only its own history: at once. A lane that a batch
-    // leaves to the scalar path is done one by one there: nothing of its
-    // pair has changed since it was queued
+    // apart changes only its own history: at once. The others are queued
+    // after that test (pairApart), and nothing of their pairs changes
+    // before they take effect: a lane that a batch leaves to the scalar
+    // path, and a pair queued for it, take the contact pair by pair
+    // (narrowPhasePair) without the test again
     const label queueSize = 4*contactBatchKicks::width;
     enum class path { scalar, sphere, ellipsoid };
     struct waiting
@@ -1166,7 +1178,7 @@ void Foam::EllipsoidCollision<CloudType>::batchInteraction
             switch (w.by)
             {
                 case path::scalar:
-                    realRealPair(w.i, w.k);
+                    narrowPhasePair(w.i, w.k);
                     break;
                 case path::sphere:
                     sphereLaneEffect(w.i, w.k, spheres, w.lane);
